@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Runs every test: native `cargo test`, the package build, wasm-bindgen-test in Node and headless
+# Chromium, and the browser end-to-end tests (Playwright) plus the npm-pack install test.
+# Installs what is missing first. The last line is the summary: "N passed, N failed".
+set -uo pipefail
+source "$(dirname "$0")/lib/ensure.sh"
+cd "$ROOT"
+ensure_all || { echo "0 passed, 1 failed"; exit 1; }
+
+LOG="$(mktemp -d)"
+failed_stages=()
+
+stage() { # name, command...
+  local name="$1"; shift
+  echo "=== $name: $*"
+  if ! "$@" 2>&1 | tee "$LOG/$name.log"; then
+    failed_stages+=("$name")
+  fi
+}
+
+stage native cargo test --tests --lib
+stage build ./scripts/build.sh
+stage wasm cargo test --target wasm32-unknown-unknown --tests
+stage e2e node --test --test-concurrency=1 tests/e2e/
+
+# Count what the runners reported: cargo's "test result: ... N passed; M failed" lines and
+# node's "# pass N" / "# fail N" lines.
+read -r passed failed < <(cat "$LOG"/*.log | awk '
+  /^test result: / { for (i = 1; i <= NF; i++) { if ($(i+1) ~ /^passed/) p += $i; if ($(i+1) ~ /^failed/) f += $i } }
+  /^# pass [0-9]+$/ { p += $3 }
+  /^# fail [0-9]+$/ { f += $3 }
+  END { print p + 0, f + 0 }')
+rm -rf "$LOG"
+if [ ${#failed_stages[@]} -gt 0 ]; then
+  echo "failed stages: ${failed_stages[*]}"
+  [ "$failed" -gt 0 ] || failed=${#failed_stages[@]}
+fi
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,84 @@
+//! `Exemplar`: the example image every synthesis starts from.
+
+use js_sys::{Uint8Array, Uint8ClampedArray};
+use wasm_bindgen::prelude::*;
+
+use super::error::JsResult;
+use super::pixels::{image_from_image_data, render_into};
+use crate::core::{Image, decode, encode_png, from_rgba8, to_rgba8};
+
+/// An example texture, decoded and held in wasm memory.
+#[wasm_bindgen]
+pub struct Exemplar {
+    image: Image,
+}
+
+#[wasm_bindgen]
+impl Exemplar {
+    /// Decodes PNG or JPEG bytes (a `Uint8Array`, e.g. from `fetch(...).arrayBuffer()`).
+    #[wasm_bindgen(js_name = fromBytes)]
+    pub fn from_bytes(bytes: &[u8]) -> JsResult<Exemplar> {
+        Ok(Exemplar {
+            image: decode(bytes)?,
+        })
+    }
+
+    /// Takes the pixels of a canvas `ImageData` (or any `{ data, width, height }` object).
+    #[wasm_bindgen(js_name = fromImageData)]
+    pub fn from_image_data(image_data: &JsValue) -> JsResult<Exemplar> {
+        Ok(Exemplar {
+            image: image_from_image_data(image_data)?,
+        })
+    }
+
+    /// Takes raw RGBA8 pixels, `width * height * 4` bytes.
+    #[wasm_bindgen(js_name = fromRgba)]
+    pub fn from_rgba(rgba: &[u8], width: u32, height: u32) -> JsResult<Exemplar> {
+        Ok(Exemplar {
+            image: from_rgba8(width as usize, height as usize, rgba)?,
+        })
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn width(&self) -> u32 {
+        self.image.width() as u32
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn height(&self) -> u32 {
+        self.image.height() as u32
+    }
+
+    /// 1 (grey), 3 (RGB) or 4 (RGBA with transparency).
+    #[wasm_bindgen(getter)]
+    pub fn channels(&self) -> u32 {
+        self.image.channels() as u32
+    }
+
+    /// Writes the exemplar as RGBA8 into `target` (length `width * height * 4`), e.g. the `data`
+    /// of an `ImageData` the caller keeps and reuses.
+    #[wasm_bindgen(js_name = renderInto)]
+    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        render_into(&self.image, target)
+    }
+
+    /// The exemplar as a new RGBA8 array.
+    #[wasm_bindgen(js_name = toRgba)]
+    pub fn to_rgba(&self) -> Uint8ClampedArray {
+        Uint8ClampedArray::from(to_rgba8(&self.image).as_slice())
+    }
+
+    /// The exemplar encoded as PNG.
+    #[wasm_bindgen(js_name = toPng)]
+    pub fn to_png(&self) -> JsResult<Uint8Array> {
+        Ok(Uint8Array::from(encode_png(&self.image)?.as_slice()))
+    }
+}
+
+impl Exemplar {
+    /// The decoded image, for the other session types.
+    #[must_use]
+    pub fn image(&self) -> &Image {
+        &self.image
+    }
+}

@@ -1,0 +1,24 @@
+//! Layer 4: the only code that knows about JavaScript. Each file wraps one JS-visible type; inputs
+//! are validated here and every failure becomes a JS `Error` whose message names the problem.
+
+mod error;
+mod exemplar;
+mod pixels;
+
+pub use exemplar::Exemplar;
+
+use wasm_bindgen::prelude::*;
+
+/// Runs once when the module is instantiated: panics (each one a bug) reach the console with a
+/// readable message instead of "unreachable executed".
+#[wasm_bindgen(start)]
+pub fn start() {
+    console_error_panic_hook::set_once();
+}
+
+/// The library's version, from `Cargo.toml`.
+#[wasm_bindgen]
+#[must_use]
+pub fn version() -> String {
+    env!("CARGO_PKG_VERSION").to_string()
+}

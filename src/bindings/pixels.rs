@@ -1,0 +1,78 @@
+//! Moving pixels across the JS boundary: reading `ImageData`-shaped objects and writing into a
+//! caller's `Uint8ClampedArray` without handing out a new buffer each frame.
+
+use js_sys::{Reflect, Uint8ClampedArray};
+use wasm_bindgen::{JsCast, JsValue};
+
+use super::error::JsResult;
+use crate::core::{Error, Image, from_rgba8, to_rgba8};
+
+/// Reads `{ data, width, height }` (a canvas `ImageData`, or any object of that shape, so it works
+/// in Node too) into an image.
+pub fn image_from_image_data(value: &JsValue) -> JsResult<Image> {
+    if !value.is_object() {
+        return Err(invalid(
+            "imageData",
+            "expected an ImageData or { data, width, height }",
+        ));
+    }
+    let width = dimension(value, "width")?;
+    let height = dimension(value, "height")?;
+    let data =
+        Reflect::get(value, &"data".into()).map_err(|_| invalid("imageData.data", "missing"))?;
+    let bytes: Vec<u8> = if let Some(clamped) = data.dyn_ref::<Uint8ClampedArray>() {
+        clamped.to_vec()
+    } else if let Some(plain) = data.dyn_ref::<js_sys::Uint8Array>() {
+        plain.to_vec()
+    } else {
+        return Err(invalid(
+            "imageData.data",
+            "must be a Uint8ClampedArray or Uint8Array",
+        ));
+    };
+    Ok(from_rgba8(width, height, &bytes)?)
+}
+
+fn dimension(value: &JsValue, name: &'static str) -> JsResult<usize> {
+    let v = Reflect::get(value, &name.into())
+        .ok()
+        .and_then(|v| v.as_f64());
+    match v {
+        Some(n) if n.is_finite() && n >= 0.0 && n.fract() == 0.0 && n <= u32::MAX as f64 => {
+            Ok(n as usize)
+        }
+        _ => Err(invalid(
+            if name == "width" {
+                "imageData.width"
+            } else {
+                "imageData.height"
+            },
+            "must be a non-negative whole number",
+        )),
+    }
+}
+
+fn invalid(name: &'static str, reason: &str) -> wasm_bindgen::JsError {
+    Error::InvalidParameter {
+        name,
+        reason: reason.into(),
+    }
+    .into()
+}
+
+/// Writes the image as RGBA8 into the caller's array, which must be exactly `width * height * 4`
+/// long (the `data` of an `ImageData` of the image's size).
+pub fn render_into(image: &Image, target: &Uint8ClampedArray) -> JsResult<()> {
+    let expected = image.pixel_count() * 4;
+    let actual = target.length() as usize;
+    if actual != expected {
+        return Err(Error::LengthMismatch {
+            what: "target pixel array",
+            expected,
+            actual,
+        }
+        .into());
+    }
+    target.copy_from(&to_rgba8(image));
+    Ok(())
+}

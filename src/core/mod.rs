@@ -1,0 +1,16 @@
+//! Layer 1: image buffers, decoding and encoding, resampling, pyramids, gradients, the seeded RNG
+//! and the error type. Plain Rust with no JavaScript in sight.
+
+pub mod codec;
+pub mod error;
+pub mod gradient;
+pub mod image;
+pub mod pyramid;
+pub mod rng;
+pub mod sample;
+
+pub use codec::{decode, encode_png, from_rgba8, to_rgba8, write_rgba8};
+pub use error::{Error, Result};
+pub use image::Image;
+pub use rng::Rng;
+pub use sample::Edge;

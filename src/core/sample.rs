@@ -1,0 +1,110 @@
+//! Bilinear sampling and resizing to any size. Coordinates put pixel (i, j)'s centre at (i, j).
+
+use super::error::Result;
+use super::image::Image;
+
+/// What lies beyond the border: the border pixel repeated, or the image repeated periodically
+/// (for tileable textures).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Edge {
+    #[default]
+    Clamp,
+    Wrap,
+}
+
+impl Edge {
+    /// Maps an integer coordinate onto `0..len`.
+    #[inline]
+    #[must_use]
+    pub fn resolve(self, i: isize, len: usize) -> usize {
+        match self {
+            Edge::Clamp => i.clamp(0, len as isize - 1) as usize,
+            Edge::Wrap => i.rem_euclid(len as isize) as usize,
+        }
+    }
+}
+
+/// Bilinearly interpolates the image at (x, y) into `out` (one value per channel).
+pub fn sample_bilinear(image: &Image, x: f32, y: f32, edge: Edge, out: &mut [f32]) {
+    let (w, h, c) = (image.width(), image.height(), image.channels());
+    let (fx, fy) = (x.floor(), y.floor());
+    let (tx, ty) = (x - fx, y - fy);
+    let (ix, iy) = (fx as isize, fy as isize);
+    let x0 = edge.resolve(ix, w);
+    let x1 = edge.resolve(ix + 1, w);
+    let y0 = edge.resolve(iy, h);
+    let y1 = edge.resolve(iy + 1, h);
+    let d = image.data();
+    let (i00, i10, i01, i11) = (
+        (y0 * w + x0) * c,
+        (y0 * w + x1) * c,
+        (y1 * w + x0) * c,
+        (y1 * w + x1) * c,
+    );
+    for (k, o) in out.iter_mut().enumerate().take(c) {
+        let top = d[i00 + k] + (d[i10 + k] - d[i00 + k]) * tx;
+        let bottom = d[i01 + k] + (d[i11 + k] - d[i01 + k]) * tx;
+        *o = top + (bottom - top) * ty;
+    }
+}
+
+/// Resizes to `width` x `height` by bilinear interpolation, pixel centres aligned (the usual
+/// convention of `(i + 0.5) * scale - 0.5`). Good for up-sampling a coarse level to any size;
+/// for shrinking by more than 2 use [`super::pyramid::downsample`] first to avoid aliasing.
+pub fn resize_bilinear(image: &Image, width: usize, height: usize, edge: Edge) -> Result<Image> {
+    let mut out = Image::new(width, height, image.channels())?;
+    let sx = image.width() as f32 / width as f32;
+    let sy = image.height() as f32 / height as f32;
+    let c = image.channels();
+    let mut px = [0.0f32; 4];
+    for y in 0..height {
+        let src_y = (y as f32 + 0.5) * sy - 0.5;
+        for x in 0..width {
+            let src_x = (x as f32 + 0.5) * sx - 0.5;
+            sample_bilinear(image, src_x, src_y, edge, &mut px);
+            out.pixel_mut(x, y).copy_from_slice(&px[..c]);
+        }
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sampling_at_pixel_centres_returns_the_pixel() {
+        let img = Image::from_fn(4, 3, 2, |x, y, c| (x + 10 * y + 100 * c) as f32).unwrap();
+        let mut out = [0.0; 2];
+        sample_bilinear(&img, 2.0, 1.0, Edge::Clamp, &mut out);
+        assert_eq!(out, [12.0, 112.0]);
+        sample_bilinear(&img, 2.5, 1.5, Edge::Clamp, &mut out);
+        assert_eq!(out, [17.5, 117.5]);
+        sample_bilinear(&img, -3.0, 9.0, Edge::Clamp, &mut out);
+        assert_eq!(out, [20.0, 120.0]);
+        sample_bilinear(&img, 3.5, 0.0, Edge::Wrap, &mut out);
+        assert_eq!(out, [1.5, 101.5]); // halfway between x = 3 and x = 0 (wrapped)
+    }
+
+    #[test]
+    fn resize_to_odd_sizes_keeps_constant_images_and_ramps() {
+        let flat = Image::from_fn(5, 5, 3, |_, _, c| c as f32 * 0.25).unwrap();
+        let big = resize_bilinear(&flat, 37, 23, Edge::Clamp).unwrap();
+        assert_eq!((big.width(), big.height(), big.channels()), (37, 23, 3));
+        assert!(big.data().chunks(3).all(|p| p == [0.0, 0.25, 0.5]));
+        // A horizontal ramp stays monotonic and within the source range.
+        let ramp = Image::from_fn(8, 1, 1, |x, _, _| x as f32).unwrap();
+        let up = resize_bilinear(&ramp, 29, 3, Edge::Clamp).unwrap();
+        let row = &up.data()[..29];
+        assert!(row.windows(2).all(|w| w[1] >= w[0]));
+        assert_eq!(row[0], 0.0);
+        assert_eq!(row[28], 7.0);
+    }
+
+    #[test]
+    fn resize_to_same_size_is_identity() {
+        let img = Image::from_fn(6, 4, 1, |x, y, _| (x * y) as f32).unwrap();
+        assert_eq!(resize_bilinear(&img, 6, 4, Edge::Clamp).unwrap(), img);
+        assert!(resize_bilinear(&img, 0, 4, Edge::Clamp).is_err());
+    }
+}

@@ -1,0 +1,7 @@
+//! The JS-facing API in headless Chromium, through chromedriver.
+#![cfg(target_arch = "wasm32")]
+
+wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
+
+#[path = "common/exemplar_cases.rs"]
+mod exemplar_cases;

@@ -1,0 +1,5 @@
+//! The JS-facing API in Node (`cargo test --target wasm32-unknown-unknown --tests`).
+#![cfg(target_arch = "wasm32")]
+
+#[path = "common/exemplar_cases.rs"]
+mod exemplar_cases;
