@@ -12,3 +12,5 @@
 
 pub mod bindings;
 pub mod core;
+pub mod methods;
+pub mod solvers;

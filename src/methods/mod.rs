@@ -1,0 +1,3 @@
+//! Layer 3: one module per paper's feature set, each a progressive session built on the solvers.
+
+pub mod optimization;

@@ -1,0 +1,83 @@
+//! The M-step: for every output neighbourhood x_p, the nearest exemplar neighbourhood z_p, by the
+//! chosen search. Every search starts from the current match and only accepts a closer one, so
+//! the quadratic energy never rises in an M-step whichever search is used.
+
+use crate::core::Rng;
+use crate::solvers::nn::kmeans_tree::KMeansTree;
+use crate::solvers::nn::patchmatch::{self, QueryGrid};
+use crate::solvers::nn::{FeatureMap, Neighbourhoods, Pos, Search, exact};
+
+/// PatchMatch sweeps per M-step (one forward, one backward). The EM loop calls it again every
+/// iteration, warm-started, so two sweeps per call are enough.
+const PATCHMATCH_PASSES: usize = 2;
+
+/// The exemplar's neighbourhoods at one level, with the search structure built over them.
+pub struct Matcher {
+    space: Neighbourhoods,
+    search: Search,
+    tree: Option<KMeansTree>,
+}
+
+impl Matcher {
+    /// Builds the search structure (the k-means tree, when that search is chosen).
+    #[must_use]
+    pub fn new(exemplar: FeatureMap, size: usize, search: Search, rng: &mut Rng) -> Self {
+        let space = Neighbourhoods::new(exemplar, size);
+        let tree = (search == Search::KMeansTree).then(|| KMeansTree::build(&space, rng));
+        Matcher {
+            space,
+            search,
+            tree,
+        }
+    }
+
+    #[must_use]
+    pub fn space(&self) -> &Neighbourhoods {
+        &self.space
+    }
+
+    /// Recomputes `distances` for the current `matches` (the queries changed in the E-step), then
+    /// improves the matches. Returns how many matches changed.
+    pub fn m_step(
+        &self,
+        queries: &[f32],
+        grid: QueryGrid<'_>,
+        matches: &mut [Pos],
+        distances: &mut [f32],
+        rng: &mut Rng,
+    ) -> usize {
+        let len = self.space.vector_len();
+        for (n, (m, d)) in matches.iter().zip(distances.iter_mut()).enumerate() {
+            *d = self
+                .space
+                .distance(&queries[n * len..(n + 1) * len], *m, f32::INFINITY);
+        }
+        match self.search {
+            Search::PatchMatch => patchmatch::improve(
+                &self.space,
+                queries,
+                grid,
+                matches,
+                distances,
+                PATCHMATCH_PASSES,
+                rng,
+            ),
+            Search::Exact | Search::KMeansTree => {
+                let mut changed = 0;
+                for (n, (m, d)) in matches.iter_mut().zip(distances.iter_mut()).enumerate() {
+                    let query = &queries[n * len..(n + 1) * len];
+                    let (pos, dist) = match &self.tree {
+                        Some(tree) => tree.nearest(&self.space, query),
+                        None => exact::nearest(&self.space, query),
+                    };
+                    if dist < *d {
+                        changed += usize::from(pos != *m);
+                        *m = pos;
+                        *d = dist;
+                    }
+                }
+                changed
+            }
+        }
+    }
+}

@@ -1,0 +1,18 @@
+//! Texture optimisation (Kwatra, Essa, Bobick & Kwatra 2005): synthesis as minimisation of a
+//! texture energy over overlapping neighbourhoods, by an EM-like alternation of an E-step (the
+//! best output for fixed matches) and an M-step (the best matches for a fixed output), with
+//! robust IRLS weights, an optional gradient energy, and a coarse-to-fine schedule.
+
+pub mod e_step;
+pub mod features;
+pub mod m_step;
+pub mod options;
+pub mod schedule;
+pub mod session;
+pub mod teaching;
+
+#[cfg(test)]
+mod tests;
+
+pub use options::Options;
+pub use session::{Event, EventKind, Session};

@@ -1,0 +1,166 @@
+//! The options of texture optimisation, with the paper's values as defaults.
+
+use crate::core::{Error, Result, error::check_size};
+use crate::solvers::nn::Search;
+
+/// Everything a texture-optimisation run can be told. Validate with [`Options::validate`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Options {
+    /// Output width in pixels. Default: 256.
+    pub output_width: usize,
+    /// Output height in pixels. Default: 256.
+    pub output_height: usize,
+    /// Seed of every random choice (bootstrap, PatchMatch, k-means). Default: 1.
+    pub seed: u64,
+    /// Resolution levels, coarse to fine, each twice the previous. Default: 3 (section 3.2).
+    pub levels: usize,
+    /// Neighbourhood widths tried at every level, largest first; those that do not fit the
+    /// level's exemplar are skipped. Default: [32, 16, 8] (section 3.2).
+    pub neighbourhood_sizes: Vec<usize>,
+    /// Cap on EM iterations per (resolution, neighbourhood size) level; a level also ends when
+    /// no match changes. Default: 5 (the paper: 3 to 5).
+    pub iterations: usize,
+    /// Exponent of the robust energy ||x_p - z_p||^r, solved by IRLS; 2 is the plain quadratic
+    /// energy. Default: 0.8 (section 3.1).
+    pub r: f32,
+    /// Weight of the gradient energy mu ||Dx_p - Dz_p||^2; 0 turns it off. Default: 0 (the paper
+    /// uses 10 when it is on).
+    pub mu: f32,
+    /// Nearest-neighbourhood search of the M-step. Default: PatchMatch, the fastest of the three
+    /// and within 2% of the exact search's final energy on the samples (see the benchmark).
+    pub search: Search,
+    /// Periodic output: neighbourhoods wrap around the borders, so the result tiles. Default: false.
+    pub tileable: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            output_width: 256,
+            output_height: 256,
+            seed: 1,
+            levels: 3,
+            neighbourhood_sizes: vec![32, 16, 8],
+            iterations: 5,
+            r: 0.8,
+            mu: 0.0,
+            search: Search::PatchMatch,
+            tileable: false,
+        }
+    }
+}
+
+/// The smallest exemplar side accepted.
+pub const MIN_EXEMPLAR_SIDE: usize = 16;
+/// Iteration caps above this are refused: a level converges long before.
+pub const MAX_ITERATIONS: usize = 100;
+
+impl Options {
+    /// Checks every option on its own and against the exemplar size; the error names the option.
+    pub fn validate(&self, exemplar_width: usize, exemplar_height: usize) -> Result<()> {
+        let invalid =
+            |name: &'static str, reason: String| Err(Error::InvalidParameter { name, reason });
+        check_size("output", self.output_width, self.output_height)?;
+        if exemplar_width < MIN_EXEMPLAR_SIDE || exemplar_height < MIN_EXEMPLAR_SIDE {
+            return Err(Error::InvalidSize {
+                what: "exemplar",
+                width: exemplar_width,
+                height: exemplar_height,
+                reason: format!(
+                    "texture optimization needs at least {MIN_EXEMPLAR_SIDE}x{MIN_EXEMPLAR_SIDE}"
+                ),
+            });
+        }
+        if !(1..=8).contains(&self.levels) {
+            return invalid(
+                "levels",
+                format!("must be between 1 and 8, got {}", self.levels),
+            );
+        }
+        if self.neighbourhood_sizes.is_empty() {
+            return invalid("neighbourhoodSizes", "must name at least one size".into());
+        }
+        if let Some(&bad) = self
+            .neighbourhood_sizes
+            .iter()
+            .find(|&&s| !(2..=128).contains(&s))
+        {
+            return invalid(
+                "neighbourhoodSizes",
+                format!("each size must be between 2 and 128, got {bad}"),
+            );
+        }
+        if !(1..=MAX_ITERATIONS).contains(&self.iterations) {
+            return invalid(
+                "iterations",
+                format!(
+                    "must be between 1 and {MAX_ITERATIONS}, got {}",
+                    self.iterations
+                ),
+            );
+        }
+        if !self.r.is_finite() || self.r <= 0.0 || self.r > 2.0 {
+            return invalid("r", format!("must be in (0, 2], got {}", self.r));
+        }
+        if !self.mu.is_finite() || self.mu < 0.0 || self.mu > 1000.0 {
+            return invalid("mu", format!("must be between 0 and 1000, got {}", self.mu));
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn message(options: Options) -> String {
+        options.validate(64, 64).unwrap_err().to_string()
+    }
+
+    #[test]
+    fn defaults_are_valid_and_every_bad_option_is_named() {
+        assert!(Options::default().validate(64, 64).is_ok());
+        let d = Options::default;
+        assert!(
+            message(Options {
+                output_width: 0,
+                ..d()
+            })
+            .contains("output size 0x256")
+        );
+        assert!(message(Options { levels: 0, ..d() }).contains("levels"));
+        assert!(
+            message(Options {
+                neighbourhood_sizes: vec![],
+                ..d()
+            })
+            .contains("neighbourhoodSizes")
+        );
+        assert!(
+            message(Options {
+                neighbourhood_sizes: vec![8, 1],
+                ..d()
+            })
+            .contains("got 1")
+        );
+        assert!(
+            message(Options {
+                iterations: 0,
+                ..d()
+            })
+            .contains("iterations")
+        );
+        assert!(message(Options { r: f32::NAN, ..d() }).contains("invalid r"));
+        assert!(message(Options { r: 3.0, ..d() }).contains("invalid r"));
+        assert!(message(Options { mu: -1.0, ..d() }).contains("invalid mu"));
+        assert!(
+            message(Options {
+                mu: f32::INFINITY,
+                ..d()
+            })
+            .contains("invalid mu")
+        );
+        let small = Options::default().validate(15, 40).unwrap_err().to_string();
+        assert!(small.contains("exemplar size 15x40"), "{small}");
+    }
+}

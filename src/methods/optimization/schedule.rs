@@ -1,0 +1,190 @@
+//! The multi-level schedule (section 3.2) as plain data: decided first, printed and tested on its
+//! own, then executed by the session.
+
+use super::options::Options;
+use crate::core::pyramid::half_size;
+use crate::core::{Error, Result};
+
+/// A neighbourhood of width `w` fits a level when the level's exemplar is at least
+/// `FIT_RATIO * w` on its shorter side, leaving `(3w + 1)^2` or more neighbourhoods to choose
+/// from. With a 128x128 exemplar and the default sizes this gives exactly the seven levels of
+/// Fig. 3: random start, (1/4, 8), (1/2, 16), (1/2, 8), (1, 32), (1, 16), (1, 8).
+pub const FIT_RATIO: usize = 4;
+
+/// One synthesis level: a resolution and a neighbourhood size.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Level {
+    /// Resolution index, 0 = full resolution, k = down-sampled k times.
+    pub octave: usize,
+    pub output_width: usize,
+    pub output_height: usize,
+    pub exemplar_width: usize,
+    pub exemplar_height: usize,
+    /// Neighbourhood width w.
+    pub size: usize,
+    /// Spacing of the neighbourhood grid X†: w / 4 (at least 1).
+    pub spacing: usize,
+}
+
+/// The levels, coarsest first.
+pub fn plan(
+    exemplar_width: usize,
+    exemplar_height: usize,
+    options: &Options,
+) -> Result<Vec<Level>> {
+    let mut sizes = options.neighbourhood_sizes.clone();
+    sizes.sort_unstable_by(|a, b| b.cmp(a));
+    sizes.dedup();
+    let dims_at = |octave: usize| {
+        let mut d = (
+            options.output_width,
+            options.output_height,
+            exemplar_width,
+            exemplar_height,
+        );
+        for _ in 0..octave {
+            d = (
+                half_size(d.0),
+                half_size(d.1),
+                half_size(d.2),
+                half_size(d.3),
+            );
+        }
+        d
+    };
+    let level = |octave: usize, size: usize| {
+        let (ow, oh, ew, eh) = dims_at(octave);
+        Level {
+            octave,
+            output_width: ow,
+            output_height: oh,
+            exemplar_width: ew,
+            exemplar_height: eh,
+            size,
+            spacing: (size / 4).max(1),
+        }
+    };
+    let mut levels = Vec::new();
+    for octave in (0..options.levels).rev() {
+        let (ow, oh, ew, eh) = dims_at(octave);
+        for &size in &sizes {
+            if size * FIT_RATIO <= ew.min(eh) && size <= ow.min(oh) {
+                levels.push(level(octave, size));
+            }
+        }
+    }
+    if levels.is_empty() {
+        // A small exemplar (16x16 with the default sizes): fall back to the smallest size that
+        // fits at half the exemplar, at full resolution only.
+        let (ow, oh, ew, eh) = dims_at(0);
+        let Some(&size) = sizes
+            .iter()
+            .rev()
+            .find(|&&s| 2 * s <= ew.min(eh) && s <= ow.min(oh))
+        else {
+            return Err(Error::InvalidParameter {
+                name: "neighbourhoodSizes",
+                reason: format!(
+                    "none of {:?} fits: a neighbourhood must be at most half the exemplar ({ew}x{eh}) and no larger than the output ({ow}x{oh})",
+                    options.neighbourhood_sizes
+                ),
+            });
+        };
+        levels.push(level(0, size));
+    }
+    Ok(levels)
+}
+
+/// Positions (top-left corners, along one axis of length `len`) of the neighbourhood grid X†:
+/// every `spacing` pixels from 0. Without wrapping, a last corner at `len - size` makes the grid
+/// cover the border; with wrapping, corners run up to `len` and neighbourhoods wrap around.
+#[must_use]
+pub fn grid_axis(len: usize, size: usize, spacing: usize, wrap: bool) -> Vec<usize> {
+    if wrap {
+        return (0..len).step_by(spacing).collect();
+    }
+    let last = len - size;
+    let mut axis: Vec<usize> = (0..=last).step_by(spacing).collect();
+    if axis.last() != Some(&last) {
+        axis.push(last);
+    }
+    axis
+}
+
+/// Index of the grid corner closest to `target` (ties to the first).
+#[must_use]
+pub fn nearest_corner(corners: &[usize], target: f64) -> usize {
+    let mut best = 0;
+    for (i, &c) in corners.iter().enumerate() {
+        if (c as f64 - target).abs() < (corners[best] as f64 - target).abs() {
+            best = i;
+        }
+    }
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn summary(levels: &[Level]) -> Vec<(usize, usize)> {
+        levels.iter().map(|l| (l.octave, l.size)).collect()
+    }
+
+    #[test]
+    fn default_schedule_for_128_to_256_is_figure_3() {
+        let levels = plan(128, 128, &Options::default()).unwrap();
+        assert_eq!(
+            summary(&levels),
+            [(2, 8), (1, 16), (1, 8), (0, 32), (0, 16), (0, 8)]
+        );
+        assert_eq!(
+            (
+                levels[0].output_width,
+                levels[0].exemplar_width,
+                levels[0].spacing
+            ),
+            (64, 32, 2)
+        );
+        assert_eq!(levels[3].spacing, 8);
+    }
+
+    #[test]
+    fn sizes_that_do_not_fit_are_skipped() {
+        assert_eq!(
+            summary(&plan(64, 64, &Options::default()).unwrap()),
+            [(1, 8), (0, 16), (0, 8)]
+        );
+        // Non-square, odd sizes: the shorter exemplar side decides.
+        let options = Options {
+            output_width: 301,
+            output_height: 97,
+            ..Options::default()
+        };
+        let levels = plan(200, 70, &options).unwrap();
+        assert_eq!(summary(&levels), [(1, 8), (0, 16), (0, 8)]);
+        assert_eq!((levels[0].output_width, levels[0].output_height), (151, 49));
+        // Tiny exemplar: the fallback level.
+        assert_eq!(
+            summary(&plan(16, 16, &Options::default()).unwrap()),
+            [(0, 8)]
+        );
+        let options = Options {
+            neighbourhood_sizes: vec![32],
+            ..Options::default()
+        };
+        let msg = plan(40, 40, &options).unwrap_err().to_string();
+        assert!(
+            msg.contains("neighbourhoodSizes") && msg.contains("[32]"),
+            "{msg}"
+        );
+    }
+
+    #[test]
+    fn grid_covers_the_border() {
+        assert_eq!(grid_axis(20, 8, 2, false), [0, 2, 4, 6, 8, 10, 12]);
+        assert_eq!(grid_axis(21, 8, 2, false), [0, 2, 4, 6, 8, 10, 12, 13]);
+        assert_eq!(grid_axis(8, 8, 2, false), [0]);
+        assert_eq!(grid_axis(10, 8, 4, true), [0, 4, 8]);
+    }
+}

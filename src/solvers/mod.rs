@@ -1,0 +1,5 @@
+//! Layer 2: the reusable numerical pieces the methods are built from. Each is tested against a
+//! slow, obvious oracle.
+
+pub mod nn;
+pub mod poisson;
