@@ -5,3 +5,6 @@ wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
 #[path = "common/exemplar_cases.rs"]
 mod exemplar_cases;
+
+#[path = "common/optimization_cases.rs"]
+mod optimization_cases;

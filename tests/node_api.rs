@@ -3,3 +3,6 @@
 
 #[path = "common/exemplar_cases.rs"]
 mod exemplar_cases;
+
+#[path = "common/optimization_cases.rs"]
+mod optimization_cases;

@@ -3,9 +3,12 @@
 
 mod error;
 mod exemplar;
+mod optimization;
+mod options;
 mod pixels;
 
 pub use exemplar::Exemplar;
+pub use optimization::TextureOptimization;
 
 use wasm_bindgen::prelude::*;
 

@@ -1,0 +1,59 @@
+//! Native benchmark of texture optimisation: `cargo run --release --example bench [-- SEARCH...]`.
+//! Synthesises 256x256 from the 128x128 and 64x64 samples with each search and prints total time,
+//! time per step (median, max), final energy and the search used. `scripts/bench.sh` runs this and
+//! the same cases as wasm in Node.
+
+use std::time::Instant;
+
+use texsynth::core::decode;
+use texsynth::methods::optimization::{EventKind, Options, Session};
+use texsynth::solvers::nn::Search;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let searches: Vec<Search> = if args.is_empty() {
+        vec![Search::PatchMatch, Search::KMeansTree, Search::Exact]
+    } else {
+        args.iter()
+            .map(|a| Search::from_name(a).unwrap_or_else(|| panic!("unknown search {a}")))
+            .collect()
+    };
+    let samples =
+        std::env::var("BENCH_SAMPLES").unwrap_or_else(|_| "gravel_128,gravel_64,tiles_128".into());
+    println!("native texture optimization, 256x256 output, default schedule (r = 0.8, seed 1)");
+    println!(
+        "{:<12} {:<12} {:>6} {:>9} {:>10} {:>10} {:>12}",
+        "exemplar", "search", "steps", "total ms", "median ms", "max ms", "final energy"
+    );
+    for name in samples.split(',') {
+        let path = format!("{}/www/samples/{name}.png", env!("CARGO_MANIFEST_DIR"));
+        let exemplar =
+            decode(&std::fs::read(&path).expect("sample exists")).expect("sample decodes");
+        for &search in &searches {
+            let options = Options {
+                search,
+                ..Options::default()
+            };
+            let start = Instant::now();
+            let mut session = Session::new(&exemplar, options).expect("valid options");
+            let mut steps = Vec::new();
+            let energy = loop {
+                let t = Instant::now();
+                let event = session.step().expect("step");
+                steps.push(t.elapsed().as_secs_f64() * 1e3);
+                if event.kind == EventKind::Done {
+                    break event.energy;
+                }
+            };
+            let total = start.elapsed().as_secs_f64() * 1e3;
+            steps.sort_by(f64::total_cmp);
+            let median = steps[steps.len() / 2];
+            let max = steps[steps.len() - 1];
+            println!(
+                "{name:<12} {:<12} {:>6} {total:>9.1} {median:>10.1} {max:>10.1} {energy:>12.6}",
+                search.name(),
+                steps.len()
+            );
+        }
+    }
+}

@@ -1,0 +1,213 @@
+//! `TextureOptimization`: the JS-visible texture-optimisation session. Each `step()` runs one EM
+//! iteration and returns a plain event object; the current image and the teaching views render
+//! into the caller's buffers.
+
+use js_sys::{Array, Float64Array, Uint8ClampedArray, Uint32Array};
+use wasm_bindgen::prelude::*;
+
+use super::error::JsResult;
+use super::exemplar::Exemplar;
+use super::options::{OptionsReader, object};
+use super::pixels::render_into;
+use crate::core::Error;
+use crate::methods::optimization::teaching::offset_map;
+use crate::methods::optimization::{Event, EventKind, Options, Session};
+use crate::solvers::nn::Search;
+
+const KNOWN: &[&str] = &[
+    "outputWidth",
+    "outputHeight",
+    "seed",
+    "levels",
+    "neighbourhoodSizes",
+    "iterations",
+    "r",
+    "mu",
+    "search",
+    "tileable",
+];
+
+/// Reads the options object; absent keys keep the defaults of [`Options`].
+fn read_options(value: &JsValue) -> JsResult<Options> {
+    let js = OptionsReader::new(value, KNOWN)?;
+    let d = Options::default();
+    let search = match js.string("search")? {
+        None => d.search,
+        Some(name) => Search::from_name(&name).ok_or_else(|| Error::InvalidParameter {
+            name: "search",
+            reason: format!("must be 'patchmatch', 'kmeans-tree' or 'exact', got '{name}'"),
+        })?,
+    };
+    Ok(Options {
+        output_width: js
+            .integer("outputWidth", 1, 1 << 20)?
+            .map_or(d.output_width, |v| v as usize),
+        output_height: js
+            .integer("outputHeight", 1, 1 << 20)?
+            .map_or(d.output_height, |v| v as usize),
+        seed: js.integer("seed", 0, (1 << 53) - 1)?.unwrap_or(d.seed),
+        levels: js
+            .integer("levels", 0, 1 << 20)?
+            .map_or(d.levels, |v| v as usize),
+        neighbourhood_sizes: js
+            .integers("neighbourhoodSizes", 0, 1 << 20)?
+            .map_or(d.neighbourhood_sizes, |v| {
+                v.into_iter().map(|s| s as usize).collect()
+            }),
+        iterations: js
+            .integer("iterations", 0, 1 << 20)?
+            .map_or(d.iterations, |v| v as usize),
+        r: js.number("r")?.map_or(d.r, |v| v as f32),
+        mu: js.number("mu")?.map_or(d.mu, |v| v as f32),
+        search,
+        tileable: js.boolean("tileable")?.unwrap_or(d.tileable),
+    })
+}
+
+fn event_object(e: &Event) -> JsValue {
+    let kind = match e.kind {
+        EventKind::Level => "level",
+        EventKind::Iteration => "iteration",
+        EventKind::Done => "done",
+    };
+    object(&[
+        ("kind", kind.into()),
+        ("done", (e.kind == EventKind::Done).into()),
+        ("level", (e.level as u32).into()),
+        ("levelCount", (e.level_count as u32).into()),
+        ("octave", (e.octave as u32).into()),
+        ("scale", (1u32 << e.octave).into()),
+        ("neighbourhoodSize", (e.size as u32).into()),
+        ("iteration", (e.iteration as u32).into()),
+        ("energy", e.energy.into()),
+        ("changed", (e.changed as u32).into()),
+        ("totalIterations", (e.total_iterations as u32).into()),
+    ])
+}
+
+/// A texture-optimisation run (Kwatra et al. 2005) you advance with `step()`.
+#[wasm_bindgen]
+pub struct TextureOptimization {
+    session: Session,
+}
+
+#[wasm_bindgen]
+impl TextureOptimization {
+    /// Plans the schedule for `exemplar` and `options` (all optional): `outputWidth`,
+    /// `outputHeight` (256), `seed` (1), `levels` (3), `neighbourhoodSizes` ([32, 16, 8]),
+    /// `iterations` per level (5), `r` (0.8), `mu` (0), `search` ('patchmatch' | 'kmeans-tree' |
+    /// 'exact'), `tileable` (false). Unknown keys and impossible values throw.
+    #[wasm_bindgen(constructor)]
+    pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<TextureOptimization> {
+        let options = read_options(&options)?;
+        Ok(TextureOptimization {
+            session: Session::new(exemplar.image(), options)?,
+        })
+    }
+
+    /// Runs one EM iteration. Returns `{ kind: 'level' | 'iteration' | 'done', done, level,
+    /// levelCount, octave, scale, neighbourhoodSize, iteration, energy, changed, totalIterations }`.
+    pub fn step(&mut self) -> JsResult<JsValue> {
+        Ok(event_object(&self.session.step()?))
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn done(&self) -> bool {
+        self.session.is_done()
+    }
+
+    /// Output width (the full size; coarse levels are up-sampled when rendered).
+    #[wasm_bindgen(getter)]
+    pub fn width(&self) -> u32 {
+        self.session.options().output_width as u32
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn height(&self) -> u32 {
+        self.session.options().output_height as u32
+    }
+
+    /// The search in use: 'patchmatch', 'kmeans-tree' or 'exact'.
+    #[wasm_bindgen(getter)]
+    pub fn search(&self) -> String {
+        self.session.options().search.name().into()
+    }
+
+    /// Writes the current output as RGBA8 into `target` (`width * height * 4` long).
+    #[wasm_bindgen(js_name = renderInto)]
+    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        render_into(&self.session.output_full_size()?, target)
+    }
+
+    /// Writes the colour-coded offset map (which exemplar position each pixel comes from: red =
+    /// exemplar x, green = exemplar y) into `target`.
+    #[wasm_bindgen(js_name = renderOffsetMap)]
+    pub fn render_offset_map(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        render_into(&offset_map(&self.session)?, target)
+    }
+
+    /// Normalised energy after every iteration so far.
+    #[wasm_bindgen(js_name = energyHistory)]
+    pub fn energy_history(&self) -> Float64Array {
+        let values: Vec<f64> = self.session.history().iter().map(|p| p.energy).collect();
+        Float64Array::from(values.as_slice())
+    }
+
+    /// The level index of every point of `energyHistory()` (to mark level changes).
+    #[wasm_bindgen(js_name = historyLevels)]
+    pub fn history_levels(&self) -> Uint32Array {
+        let values: Vec<u32> = self
+            .session
+            .history()
+            .iter()
+            .map(|p| p.level as u32)
+            .collect();
+        Uint32Array::from(values.as_slice())
+    }
+
+    /// The planned levels: `[{ octave, scale, neighbourhoodSize, spacing, outputWidth,
+    /// outputHeight, exemplarWidth, exemplarHeight }]`, coarsest first.
+    pub fn schedule(&self) -> Array {
+        self.session
+            .schedule()
+            .iter()
+            .map(|l| {
+                object(&[
+                    ("octave", (l.octave as u32).into()),
+                    ("scale", (1u32 << l.octave).into()),
+                    ("neighbourhoodSize", (l.size as u32).into()),
+                    ("spacing", (l.spacing as u32).into()),
+                    ("outputWidth", (l.output_width as u32).into()),
+                    ("outputHeight", (l.output_height as u32).into()),
+                    ("exemplarWidth", (l.exemplar_width as u32).into()),
+                    ("exemplarHeight", (l.exemplar_height as u32).into()),
+                ])
+            })
+            .collect()
+    }
+
+    /// The neighbourhood grid X† of the current level: `{ columns, rows, neighbourhoodSize,
+    /// levelWidth, levelHeight, matches }`, where `columns`/`rows` are the top-left corners in
+    /// level pixels and `matches` holds the chosen exemplar corner z_p of every node as x, y pairs
+    /// (row by row). `null` before the first step.
+    pub fn field(&self) -> JsValue {
+        let Some((cols, rows, matches)) = self.session.matches() else {
+            return JsValue::NULL;
+        };
+        let level = self.session.current_level();
+        let to_u32 = |v: &[usize]| {
+            Uint32Array::from(v.iter().map(|&x| x as u32).collect::<Vec<_>>().as_slice())
+        };
+        let pairs: Vec<u32> = matches.iter().flat_map(|m| [m.x, m.y]).collect();
+        object(&[
+            ("columns", to_u32(cols).into()),
+            ("rows", to_u32(rows).into()),
+            ("neighbourhoodSize", (level.size as u32).into()),
+            ("levelWidth", (level.output_width as u32).into()),
+            ("levelHeight", (level.output_height as u32).into()),
+            ("exemplarWidth", (level.exemplar_width as u32).into()),
+            ("exemplarHeight", (level.exemplar_height as u32).into()),
+            ("matches", Uint32Array::from(pairs.as_slice()).into()),
+        ])
+    }
+}

@@ -1,0 +1,134 @@
+//! Reading a plain JS options object (`{ outputWidth: 256, seed: 7 }`): unknown keys are refused
+//! by name, and every value is checked for its type and range before it reaches the methods.
+
+use js_sys::{Array, Object, Reflect};
+use wasm_bindgen::{JsCast, JsValue};
+
+use super::error::JsResult;
+use crate::core::Error;
+
+/// An options object whose keys have been checked against the known ones.
+pub struct OptionsReader {
+    object: Object,
+}
+
+fn invalid(name: &'static str, reason: impl Into<String>) -> wasm_bindgen::JsError {
+    Error::InvalidParameter {
+        name,
+        reason: reason.into(),
+    }
+    .into()
+}
+
+impl OptionsReader {
+    /// Accepts `undefined`/`null` (all defaults) or a plain object with only `known` keys.
+    pub fn new(value: &JsValue, known: &[&str]) -> JsResult<OptionsReader> {
+        if value.is_undefined() || value.is_null() {
+            return Ok(OptionsReader {
+                object: Object::new(),
+            });
+        }
+        let Some(object) = value.dyn_ref::<Object>().filter(|_| value.is_object()) else {
+            return Err(invalid(
+                "options",
+                "must be an object such as { outputWidth: 256 }",
+            ));
+        };
+        for key in Object::keys(object).iter() {
+            let key = key.as_string().unwrap_or_default();
+            if !known.contains(&key.as_str()) {
+                let mut msg = Error::UnknownOption(key).to_string();
+                msg.push_str(&format!(" (known options: {})", known.join(", ")));
+                return Err(wasm_bindgen::JsError::new(&msg));
+            }
+        }
+        Ok(OptionsReader {
+            object: object.clone(),
+        })
+    }
+
+    fn get(&self, name: &str) -> Option<JsValue> {
+        let v = Reflect::get(&self.object, &name.into()).ok()?;
+        (!v.is_undefined() && !v.is_null()).then_some(v)
+    }
+
+    /// A finite number.
+    pub fn number(&self, name: &'static str) -> JsResult<Option<f64>> {
+        match self.get(name) {
+            None => Ok(None),
+            Some(v) => match v.as_f64() {
+                Some(n) if n.is_finite() => Ok(Some(n)),
+                Some(n) => Err(invalid(name, format!("must be a finite number, got {n}"))),
+                None => Err(invalid(name, "must be a number")),
+            },
+        }
+    }
+
+    /// A whole number in `min..=max`.
+    pub fn integer(&self, name: &'static str, min: u64, max: u64) -> JsResult<Option<u64>> {
+        match self.number(name)? {
+            None => Ok(None),
+            Some(n) if n.fract() == 0.0 && n >= min as f64 && n <= max as f64 => Ok(Some(n as u64)),
+            Some(n) => Err(invalid(
+                name,
+                format!("must be a whole number from {min} to {max}, got {n}"),
+            )),
+        }
+    }
+
+    pub fn boolean(&self, name: &'static str) -> JsResult<Option<bool>> {
+        match self.get(name) {
+            None => Ok(None),
+            Some(v) => v
+                .as_bool()
+                .map(Some)
+                .ok_or_else(|| invalid(name, "must be true or false")),
+        }
+    }
+
+    pub fn string(&self, name: &'static str) -> JsResult<Option<String>> {
+        match self.get(name) {
+            None => Ok(None),
+            Some(v) => v
+                .as_string()
+                .map(Some)
+                .ok_or_else(|| invalid(name, "must be a string")),
+        }
+    }
+
+    /// An array of whole numbers in `min..=max`.
+    pub fn integers(&self, name: &'static str, min: u64, max: u64) -> JsResult<Option<Vec<u64>>> {
+        let Some(v) = self.get(name) else {
+            return Ok(None);
+        };
+        if !Array::is_array(&v) {
+            return Err(invalid(name, "must be an array of whole numbers"));
+        }
+        let mut out = Vec::new();
+        for item in Array::from(&v).iter() {
+            match item.as_f64() {
+                Some(n) if n.fract() == 0.0 && n >= min as f64 && n <= max as f64 => {
+                    out.push(n as u64)
+                }
+                _ => {
+                    return Err(invalid(
+                        name,
+                        format!(
+                            "each entry must be a whole number from {min} to {max}, got {item:?}"
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(Some(out))
+    }
+}
+
+/// Builds a plain JS object from (key, value) pairs.
+pub fn object(entries: &[(&str, JsValue)]) -> JsValue {
+    let obj = Object::new();
+    for (key, value) in entries {
+        Reflect::set(&obj, &(*key).into(), value).expect("setting a property of a fresh object");
+    }
+    obj.into()
+}

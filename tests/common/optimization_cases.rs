@@ -1,0 +1,139 @@
+//! The JS-facing `TextureOptimization` session, as JavaScript calls it (Node and Chromium).
+
+use js_sys::{Array, Object, Reflect, Uint8ClampedArray};
+use texsynth::bindings::{Exemplar, TextureOptimization};
+use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen_test::wasm_bindgen_test;
+
+const GRAVEL_64: &[u8] = include_bytes!("../../www/samples/gravel_64.png");
+
+fn options(entries: &[(&str, JsValue)]) -> JsValue {
+    let obj = Object::new();
+    for (k, v) in entries {
+        Reflect::set(&obj, &(*k).into(), v).unwrap();
+    }
+    obj.into()
+}
+
+fn get(value: &JsValue, key: &str) -> JsValue {
+    Reflect::get(value, &key.into()).unwrap()
+}
+
+fn error_message(result: Result<TextureOptimization, wasm_bindgen::JsError>) -> String {
+    let Err(err) = result else {
+        panic!("expected an error")
+    };
+    let value: JsValue = err.into();
+    String::from(
+        value
+            .dyn_ref::<js_sys::Error>()
+            .expect("a JS Error")
+            .message(),
+    )
+}
+
+#[wasm_bindgen_test]
+fn a_session_steps_renders_and_finishes() {
+    let ex = Exemplar::from_bytes(GRAVEL_64).unwrap();
+    let opts = options(&[
+        ("outputWidth", 48.into()),
+        ("outputHeight", 40.into()),
+        ("iterations", 2.into()),
+        ("seed", 3.into()),
+    ]);
+    let mut session = TextureOptimization::new(&ex, opts).unwrap();
+    assert_eq!((session.width(), session.height()), (48, 40));
+    assert_eq!(session.search(), "patchmatch");
+    assert!(session.field().is_null());
+    let first = session.step().unwrap();
+    assert_eq!(get(&first, "kind").as_string().unwrap(), "level");
+    assert!(get(&first, "energy").as_f64().unwrap() > 0.0);
+    let target = Uint8ClampedArray::new_with_length(48 * 40 * 4);
+    session.render_into(&target).unwrap();
+    let before = target.to_vec();
+    let mut steps = 1;
+    while !session.done() {
+        let event = session.step().unwrap();
+        steps += 1;
+        assert!(steps < 100, "the session finishes");
+        if get(&event, "done").as_bool().unwrap() {
+            assert_eq!(get(&event, "kind").as_string().unwrap(), "done");
+        }
+    }
+    session.render_into(&target).unwrap();
+    assert_ne!(
+        before,
+        target.to_vec(),
+        "the image changes as the synthesis runs"
+    );
+    assert_eq!(session.energy_history().length() as usize, steps);
+    assert_eq!(session.history_levels().length() as usize, steps);
+    let field = session.field();
+    let columns = get(&field, "columns")
+        .dyn_into::<js_sys::Uint32Array>()
+        .unwrap()
+        .length();
+    let rows = get(&field, "rows")
+        .dyn_into::<js_sys::Uint32Array>()
+        .unwrap()
+        .length();
+    let matches = get(&field, "matches")
+        .dyn_into::<js_sys::Uint32Array>()
+        .unwrap()
+        .length();
+    assert_eq!(matches, 2 * columns * rows);
+    session.render_offset_map(&target).unwrap();
+    assert!(Array::from(&session.schedule().into()).length() >= 1);
+}
+
+#[wasm_bindgen_test]
+fn same_seed_same_pixels() {
+    let ex = Exemplar::from_bytes(GRAVEL_64).unwrap();
+    let render = || {
+        let opts = options(&[
+            ("outputWidth", 40.into()),
+            ("outputHeight", 40.into()),
+            ("iterations", 2.into()),
+        ]);
+        let mut s = TextureOptimization::new(&ex, opts).unwrap();
+        while !s.done() {
+            s.step().unwrap();
+        }
+        let t = Uint8ClampedArray::new_with_length(40 * 40 * 4);
+        s.render_into(&t).unwrap();
+        t.to_vec()
+    };
+    assert_eq!(render(), render());
+}
+
+#[wasm_bindgen_test]
+fn bad_options_are_errors_that_name_them() {
+    let ex = Exemplar::from_bytes(GRAVEL_64).unwrap();
+    let msg = |entries: &[(&str, JsValue)]| {
+        error_message(TextureOptimization::new(&ex, options(entries)))
+    };
+    assert!(msg(&[("outputWidht", 5.into())]).contains("unknown option 'outputWidht'"));
+    assert!(msg(&[("outputWidth", 0.into())]).contains("invalid outputWidth"));
+    assert!(msg(&[("outputWidth", 2.5.into())]).contains("invalid outputWidth"));
+    assert!(
+        msg(&[
+            ("outputWidth", 100000.into()),
+            ("outputHeight", 100000.into())
+        ])
+        .contains("100000x100000")
+    );
+    assert!(msg(&[("r", f64::NAN.into())]).contains("invalid r"));
+    assert!(msg(&[("mu", "ten".into())]).contains("invalid mu"));
+    assert!(msg(&[("seed", (-1).into())]).contains("invalid seed"));
+    assert!(msg(&[("search", "fast".into())]).contains("invalid search"));
+    assert!(msg(&[("neighbourhoodSizes", 8.into())]).contains("neighbourhoodSizes"));
+    assert!(msg(&[("tileable", 1.into())]).contains("invalid tileable"));
+    let ex16 = Exemplar::from_rgba(&[9; 8 * 8 * 4], 8, 8).unwrap();
+    let small = error_message(TextureOptimization::new(&ex16, JsValue::UNDEFINED));
+    assert!(small.contains("exemplar size 8x8"), "{small}");
+    let not_object = error_message(TextureOptimization::new(&ex, JsValue::from(3)));
+    assert!(not_object.contains("options"), "{not_object}");
+    let ok = TextureOptimization::new(&ex, JsValue::NULL).unwrap();
+    let target = Uint8ClampedArray::new_with_length(7);
+    assert!(ok.render_into(&target).is_err());
+}
