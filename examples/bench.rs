@@ -1,7 +1,7 @@
 //! Native benchmark of texture optimisation: `cargo run --release --example bench [-- SEARCH...]`.
 //! Synthesises 256x256 from the 128x128 and 64x64 samples with each search and prints total time,
 //! time per step (median, max), final energy and the search used. `scripts/bench.sh` runs this and
-//! the same cases as wasm in Node.
+//! the same cases as wasm in Node. `BENCH_WRITE=dir` also writes each output as a PNG.
 
 use std::time::Instant;
 
@@ -49,6 +49,11 @@ fn main() {
             steps.sort_by(f64::total_cmp);
             let median = steps[steps.len() / 2];
             let max = steps[steps.len() - 1];
+            if let Ok(dir) = std::env::var("BENCH_WRITE") {
+                let output = session.output_full_size().expect("output");
+                let png = texsynth::core::encode_png(&output).expect("png");
+                std::fs::write(format!("{dir}/{name}-{}.png", search.name()), png).expect("write");
+            }
             println!(
                 "{name:<12} {:<12} {:>6} {total:>9.1} {median:>10.1} {max:>10.1} {energy:>12.6}",
                 search.name(),

@@ -1,14 +1,18 @@
-// The demo page: loads the wasm package, wires the exemplar input, and hosts one panel per method.
+// The demo page: loads the wasm package, wires the exemplar input and the shared controls, and
+// hosts one panel per method (www/panels/). A panel gives its options, its side view, and
+// step / onStep / reset; the page paces it with Run / Pause / Step / Reset.
 import init, { version } from './pkg/texsynth.js';
 import { drawInto } from './lib/canvas.js';
 import { setupInput } from './lib/input.js';
+import { Runner } from './lib/runner.js';
+import * as optimization from './panels/optimization.js';
 
+const PANELS = [optimization];
 const $ = (id) => document.getElementById(id);
 
 function showError(message) {
-  const box = $('error');
-  box.textContent = message;
-  box.hidden = false;
+  $('error').textContent = message;
+  $('error').hidden = false;
 }
 
 function clearError() {
@@ -16,26 +20,98 @@ function clearError() {
   $('error').textContent = '';
 }
 
-const state = { exemplar: null, label: '' };
+const state = { exemplar: null, panel: null, runner: null };
+
+const clampInt = (value, lo, hi, fallback) => {
+  const n = Math.round(Number(value));
+  return Number.isFinite(n) ? Math.min(hi, Math.max(lo, n)) : fallback;
+};
+
+const ui = {
+  $,
+  outputCanvas: null,
+  exemplar: () => state.exemplar,
+  outputWidth: () => clampInt($('out-width').value, 16, 2048, 256),
+  outputHeight: () => clampInt($('out-height').value, 16, 2048, 256),
+  seed: () => clampInt($('seed').value, 0, 2 ** 32, 1),
+};
+
+function setStatus(text) {
+  $('status').textContent = text;
+}
+
+function resetPanel() {
+  state.runner?.pause();
+  state.panel?.reset();
+  setStatus(state.exemplar ? 'ready' : 'pick an exemplar');
+}
+
+function selectPanel(module) {
+  resetPanel();
+  state.panel = module.createPanel(ui);
+  $('method-options').innerHTML = state.panel.optionsHtml;
+  $('side').innerHTML = state.panel.sideHtml;
+  for (const button of $('methods').children) {
+    button.setAttribute('aria-selected', String(button.dataset.panel === module.id));
+  }
+  state.panel.mount();
+  for (const input of $('method-options').querySelectorAll('input, select')) {
+    if (input.id !== 'to-teaching') input.addEventListener('change', resetPanel);
+  }
+  state.runner = new Runner({
+    step: () => state.panel.step(),
+    onStep: (event) => {
+      clearError();
+      state.panel.onStep(event);
+      setStatus(event.done ? 'done' : state.runner.running ? 'running…' : 'paused');
+    },
+    onDone: () => setStatus('done'),
+    onError: (message) => {
+      showError(message);
+      setStatus('stopped');
+    },
+  });
+  resetPanel();
+}
 
 function setExemplar(exemplar, label) {
   clearError();
+  resetPanel();
   state.exemplar?.free();
   state.exemplar = exemplar;
-  state.label = label;
   drawInto($('exemplar-canvas'), exemplar);
   const kind = { 1: 'grey', 2: 'grey + alpha', 3: 'RGB', 4: 'RGBA' }[exemplar.channels];
   $('exemplar-info').textContent = `${label}: ${exemplar.width}×${exemplar.height}, ${kind}`;
   document.body.dataset.exemplar = label;
+  setStatus('ready');
 }
 
 async function main() {
   await init();
   $('version').textContent = `v${version()}`;
-  // Method panels register here as they land; until then the controls have nothing to drive.
-  for (const id of ['run', 'pause', 'step', 'reset']) $(id).disabled = true;
-  $('status').textContent = 'no synthesis method loaded yet';
-  $('side').innerHTML = '<p class="empty">Plots and teaching views appear here while a method runs.</p>';
+  ui.outputCanvas = $('output-canvas');
+  for (const module of PANELS) {
+    const button = document.createElement('button');
+    button.type = 'button';
+    button.role = 'tab';
+    button.dataset.panel = module.id;
+    button.textContent = module.title;
+    button.addEventListener('click', () => selectPanel(module));
+    $('methods').append(button);
+  }
+  selectPanel(PANELS[0]);
+  $('run').addEventListener('click', () => {
+    if (!state.exemplar) return;
+    state.runner.run();
+    setStatus('running…');
+  });
+  $('pause').addEventListener('click', () => {
+    state.runner.pause();
+    setStatus('paused');
+  });
+  $('step').addEventListener('click', () => state.exemplar && state.runner.stepOnce());
+  $('reset').addEventListener('click', resetPanel);
+  for (const id of ['seed', 'out-width', 'out-height']) $(id).addEventListener('change', resetPanel);
 
   const input = setupInput({
     samplesEl: $('samples'),

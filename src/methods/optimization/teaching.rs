@@ -6,9 +6,9 @@ use super::session::Session;
 use crate::core::{Image, Result};
 
 /// An RGB image of the output size in which each pixel's colour encodes the exemplar position its
-/// neighbourhood was matched to: red grows with exemplar x, green with exemplar y, and blue is
-/// their mix reversed, so coherent copied regions show as smooth gradients and seams between
-/// them as colour jumps. Each pixel takes the match of the grid neighbourhood whose centre is
+/// neighbourhood was matched to: red grows with exemplar x, green with exemplar y, blue is fixed
+/// at one half, so coherent copied regions show as smooth gradients and seams between them as
+/// colour jumps. Each pixel takes the match of the grid neighbourhood whose centre is
 /// nearest.
 pub fn offset_map(session: &Session) -> Result<Image> {
     let opts = session.options();
@@ -38,8 +38,7 @@ pub fn offset_map(session: &Session) -> Result<Image> {
             let z = matches[j * cols.len() + i];
             let u = ((f64::from(z.x) + rx + half) / ew).clamp(0.0, 1.0) as f32;
             let v = ((f64::from(z.y) + ry + half) / eh).clamp(0.0, 1.0) as f32;
-            map.pixel_mut(x, y)
-                .copy_from_slice(&[u, v, 1.0 - 0.5 * (u + v)]);
+            map.pixel_mut(x, y).copy_from_slice(&[u, v, 0.5]);
         }
     }
     Ok(map)

@@ -1,0 +1,72 @@
+// The "Texture optimization" panel in headless Chromium: steps redraw the canvas, Run goes to
+// done, the energy plot gets its points, the teaching view draws the offset map.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { openDemo, RESULTS } from './harness.mjs';
+
+let demo;
+before(async () => {
+  demo = await openDemo();
+});
+after(async () => demo?.close());
+
+const canvasPixels = (page, id) =>
+  page.evaluate((id) => {
+    const c = document.getElementById(id);
+    return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
+  }, id);
+
+/** Pixels of the plot's line colour (#e0a458), i.e. the energy points and line. */
+const plotInk = (page) =>
+  page.evaluate(() => {
+    const c = document.getElementById('to-energy');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - 224) < 12 && Math.abs(d[i + 1] - 164) < 12 && Math.abs(d[i + 2] - 88) < 12) n++;
+    return n;
+  });
+
+test('stepping redraws, running reaches done, the plot has points', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-sample="tiles_64"]');
+  await page.waitForSelector('body[data-exemplar="tiles 64×64"]');
+  await page.fill('#out-width', '128');
+  await page.fill('#out-height', '128');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.click('#step');
+  await page.waitForSelector('body[data-iterations="1"]');
+  const first = await canvasPixels(page, 'output-canvas');
+  assert.equal(first.length, 128 * 128 * 4);
+  await page.click('#step');
+  await page.waitForSelector('body[data-iterations="2"]');
+  const second = await canvasPixels(page, 'output-canvas');
+  assert.notDeepEqual(first, second, 'the canvas changes between iterations');
+  assert.match(await page.textContent('#to-readout'), /level 1\/\d+ · resolution 1\/\d+ · neighbourhood 8×8 · iteration 2/);
+
+  await page.click('#run');
+  await page.waitForSelector('body[data-optimization-done="true"]', { timeout: 60_000 });
+  assert.equal(await page.textContent('#status'), 'done');
+  const iterations = Number(await page.getAttribute('body', 'data-iterations'));
+  assert.ok(iterations >= 4, `${iterations} iterations`);
+  assert.ok((await plotInk(page)) > 20 * 2, 'the energy plot shows its points');
+  const final = await canvasPixels(page, 'output-canvas');
+  assert.ok(new Set(final).size > 50, 'the output is a texture, not a flat colour');
+  await page.screenshot({ path: `${RESULTS}/optimization.png`, fullPage: true });
+
+  await page.check('#to-teaching');
+  const teaching = await canvasPixels(page, 'output-canvas');
+  assert.notDeepEqual(teaching, final, 'the teaching view draws the offset map');
+  await page.screenshot({ path: `${RESULTS}/optimization-teaching.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});
+
+test('reset clears the run and a bad option shows an error', async () => {
+  const { page } = demo;
+  await page.click('#reset');
+  assert.equal(await page.getAttribute('body', 'data-iterations'), '0');
+  await page.fill('#to-r', '5');
+  await page.dispatchEvent('#to-r', 'change');
+  await page.click('#step');
+  await page.waitForSelector('#error:not([hidden])');
+  assert.match(await page.textContent('#error'), /invalid r: must be in \(0, 2\], got 5/);
+});

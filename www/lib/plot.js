@@ -1,0 +1,55 @@
+// A small line plot on a canvas: values against step, with vertical markers where a level starts.
+
+/**
+ * Draws `values` (numbers) on `canvas`. `markers` is a list of { index, label } drawn as dashed
+ * vertical lines (level changes). Axis labels give the range.
+ */
+export function drawLinePlot(canvas, values, { markers = [], title = '', color = '#e0a458' } = {}) {
+  const ctx = canvas.getContext('2d');
+  const { width, height } = canvas;
+  const pad = { left: 44, right: 8, top: 18, bottom: 18 };
+  ctx.clearRect(0, 0, width, height);
+  ctx.fillStyle = '#101217';
+  ctx.fillRect(0, 0, width, height);
+  ctx.font = '11px system-ui, sans-serif';
+  ctx.fillStyle = '#9aa1b2';
+  ctx.fillText(title, pad.left, 12);
+  if (values.length === 0) return;
+  const max = Math.max(...values);
+  const min = Math.min(0, ...values);
+  const span = max - min || 1;
+  const x = (i) => pad.left + (values.length === 1 ? 0 : (i / (values.length - 1)) * (width - pad.left - pad.right));
+  const y = (v) => height - pad.bottom - ((v - min) / span) * (height - pad.top - pad.bottom);
+  ctx.strokeStyle = '#2e3340';
+  ctx.beginPath();
+  ctx.moveTo(pad.left, pad.top);
+  ctx.lineTo(pad.left, height - pad.bottom);
+  ctx.lineTo(width - pad.right, height - pad.bottom);
+  ctx.stroke();
+  ctx.fillText(format(max), 2, pad.top + 4);
+  ctx.fillText(format(min), 2, height - pad.bottom);
+  ctx.fillText(`${values.length}`, width - pad.right - 16, height - 4);
+  ctx.setLineDash([3, 3]);
+  for (const { index, label } of markers) {
+    ctx.strokeStyle = '#4a5163';
+    ctx.beginPath();
+    ctx.moveTo(x(index), pad.top);
+    ctx.lineTo(x(index), height - pad.bottom);
+    ctx.stroke();
+    ctx.fillStyle = '#9aa1b2';
+    ctx.fillText(label, x(index) + 2, pad.top + 10);
+  }
+  ctx.setLineDash([]);
+  ctx.strokeStyle = color;
+  ctx.lineWidth = 1.5;
+  ctx.beginPath();
+  values.forEach((v, i) => (i === 0 ? ctx.moveTo(x(i), y(v)) : ctx.lineTo(x(i), y(v))));
+  ctx.stroke();
+  ctx.fillStyle = color;
+  values.forEach((v, i) => ctx.fillRect(x(i) - 1.5, y(v) - 1.5, 3, 3));
+  ctx.lineWidth = 1;
+}
+
+function format(v) {
+  return Math.abs(v) >= 100 || v === 0 ? v.toFixed(0) : v.toPrecision(2);
+}

@@ -1,0 +1,147 @@
+// The "Texture optimization" panel (Kwatra et al. 2005): every EM iteration is drawn as it
+// happens, with the energy plot of the paper's Fig. 3 and a teaching view of the neighbourhood
+// grid and the chosen exemplar positions.
+import { TextureOptimization } from '../pkg/texsynth.js';
+import { drawInto } from '../lib/canvas.js';
+import { drawLinePlot } from '../lib/plot.js';
+
+export const id = 'optimization';
+export const title = 'Texture optimization';
+
+const OPTIONS_HTML = `
+  <label>Search <select id="to-search">
+    <option value="patchmatch">PatchMatch</option>
+    <option value="kmeans-tree">k-means tree</option>
+    <option value="exact">exact (slow)</option>
+  </select></label>
+  <label title="robust exponent: 2 is least squares, 0.8 the paper's IRLS">r <input id="to-r" type="number" value="0.8" min="0.1" max="2" step="0.1"></label>
+  <label title="weight of the gradient energy; 0 is off, the paper uses 10">μ <input id="to-mu" type="number" value="0" min="0" max="100" step="1"></label>
+  <label title="EM iterations per level at most">iterations <input id="to-iterations" type="number" value="5" min="1" max="20" step="1"></label>
+  <label><input id="to-tileable" type="checkbox"> tileable</label>
+  <label><input id="to-teaching" type="checkbox"> teaching view</label>`;
+
+const SIDE_HTML = `
+  <div class="readout" id="to-readout">press Run or Step</div>
+  <canvas id="to-energy" class="plot" width="296" height="170" aria-label="Energy plot"></canvas>
+  <p class="legend" id="to-legend"></p>`;
+
+/** Creates the panel. `ui` gives the shared controls, canvas and exemplar. */
+export function createPanel(ui) {
+  let session = null;
+  let offsetImage = null;
+
+  function options() {
+    return {
+      outputWidth: ui.outputWidth(),
+      outputHeight: ui.outputHeight(),
+      seed: ui.seed(),
+      search: ui.$('to-search').value,
+      r: Number(ui.$('to-r').value),
+      mu: Number(ui.$('to-mu').value),
+      iterations: Number(ui.$('to-iterations').value),
+      tileable: ui.$('to-tileable').checked,
+    };
+  }
+
+  function ensureSession() {
+    if (!session) {
+      session = new TextureOptimization(ui.exemplar(), options());
+      const plan = session.schedule().map((l) => `1/${l.scale}·${l.neighbourhoodSize}`).join(' → ');
+      ui.$('to-legend').textContent = `schedule: ${plan}`;
+    }
+    return session;
+  }
+
+  function draw() {
+    if (!session) return;
+    const canvas = ui.outputCanvas;
+    if (ui.$('to-teaching').checked && session.field()) {
+      // The offset map, scaled up without smoothing so the grid can be drawn finer than a pixel.
+      offsetImage = offsetImage?.width === session.width && offsetImage.height === session.height
+        ? offsetImage : new ImageData(session.width, session.height);
+      session.renderOffsetMap(offsetImage.data);
+      const zoom = Math.max(1, Math.floor(512 / Math.max(session.width, session.height)));
+      const source = document.createElement('canvas');
+      source.width = session.width;
+      source.height = session.height;
+      source.getContext('2d').putImageData(offsetImage, 0, 0);
+      canvas.width = session.width * zoom;
+      canvas.height = session.height * zoom;
+      const ctx = canvas.getContext('2d');
+      ctx.imageSmoothingEnabled = false;
+      ctx.drawImage(source, 0, 0, canvas.width, canvas.height);
+      drawGrid(canvas, session.field());
+    } else {
+      drawInto(canvas, session);
+    }
+  }
+
+  function plot() {
+    const values = Array.from(session.energyHistory());
+    const levels = session.historyLevels();
+    const schedule = session.schedule();
+    const markers = [];
+    levels.forEach((level, i) => {
+      if (i === 0 || levels[i - 1] !== level) {
+        const l = schedule[level];
+        markers.push({ index: i, label: `1/${l.scale}·${l.neighbourhoodSize}` });
+      }
+    });
+    drawLinePlot(ui.$('to-energy'), values, { markers, title: 'energy per iteration (Fig. 3)' });
+  }
+
+  return {
+    id,
+    title,
+    optionsHtml: OPTIONS_HTML,
+    sideHtml: SIDE_HTML,
+    mount() {
+      ui.$('to-teaching').addEventListener('change', draw);
+    },
+    step() {
+      return ensureSession().done ? null : session.step();
+    },
+    onStep(event) {
+      draw();
+      plot();
+      ui.$('to-readout').textContent =
+        `level ${event.level + 1}/${event.levelCount} · resolution 1/${event.scale} · ` +
+        `neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration} · ` +
+        `energy ${event.energy.toPrecision(4)} · ${event.changed} matches changed`;
+      document.body.dataset.iterations = String(event.totalIterations);
+      if (event.done) document.body.dataset.optimizationDone = 'true';
+    },
+    reset() {
+      session?.free();
+      session = null;
+      delete document.body.dataset.optimizationDone;
+      document.body.dataset.iterations = '0';
+      ui.$('to-readout').textContent = 'press Run or Step';
+      ui.$('to-legend').textContent = '';
+      drawLinePlot(ui.$('to-energy'), [], { title: 'energy per iteration (Fig. 3)' });
+      const ctx = ui.outputCanvas.getContext('2d');
+      ctx.clearRect(0, 0, ui.outputCanvas.width, ui.outputCanvas.height);
+    },
+  };
+}
+
+/** Neighbourhood grid X†: every node centre as a dot, and every fourth neighbourhood outlined
+ * (w / 4 spacing means those tile the output without overlap). */
+function drawGrid(canvas, field) {
+  const ctx = canvas.getContext('2d');
+  const sx = canvas.width / field.levelWidth;
+  const sy = canvas.height / field.levelHeight;
+  const w = field.neighbourhoodSize;
+  ctx.fillStyle = 'rgba(0,0,0,0.55)';
+  for (const y of field.rows) {
+    for (const x of field.columns) ctx.fillRect((x + w / 2) * sx - 1, (y + w / 2) * sy - 1, 2, 2);
+  }
+  ctx.strokeStyle = 'rgba(255,255,255,0.5)';
+  field.rows.forEach((y, j) => {
+    if (j % 4) return;
+    field.columns.forEach((x, i) => {
+      if (i % 4) return;
+      ctx.strokeRect(x * sx + 0.5, y * sy + 0.5, w * sx - 1, w * sy - 1);
+    });
+  });
+}
