@@ -1,3 +1,4 @@
 //! Layer 3: one module per paper's feature set, each a progressive session built on the solvers.
 
+pub mod graphcut;
 pub mod optimization;

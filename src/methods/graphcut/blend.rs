@@ -1,0 +1,167 @@
+//! Hiding seams in the final image (section 5): feathering, a Gaussian-weighted mix of the patches
+//! meeting near a seam, and Burt & Adelson's multi-resolution splining, which blends each band of
+//! a Laplacian pyramid across the cut with a correspondingly blurred mask.
+
+use super::canvas::{Patch, UNCOVERED};
+use super::synthesis::Synthesis;
+use crate::core::pyramid::gaussian_pyramid;
+use crate::core::sample::resize_bilinear;
+use crate::core::{Edge, Image, Result};
+
+/// Radius of the feathering window; the Gaussian has sigma = radius / 2.
+pub const FEATHER_RADIUS: usize = 3;
+/// Pyramid levels of the multi-resolution spline.
+pub const SPLINE_LEVELS: usize = 4;
+
+impl Synthesis {
+    /// The value patch `patch` shows at pixel `i`, or the output's own where it does not reach.
+    fn patch_value(&self, patch: Patch, i: usize) -> &[f32] {
+        self.sample(patch, i, true).colour
+    }
+
+    /// Feathering: a pixel near a seam becomes the average of what each nearby pixel's patch
+    /// shows at it, weighted by a Gaussian of the distance to that nearby pixel. Away from
+    /// seams every nearby pixel has the same patch and the pixel is unchanged.
+    pub fn feathered(&self) -> Image {
+        let (w, h, c) = (
+            self.canvas.width,
+            self.canvas.height,
+            self.canvas.pixels.channels(),
+        );
+        let mut out = self.canvas.pixels.clone();
+        let r = FEATHER_RADIUS as isize;
+        let sigma2 = (FEATHER_RADIUS as f32 / 2.0).powi(2);
+        let edge = if self.canvas.wrap {
+            Edge::Wrap
+        } else {
+            Edge::Clamp
+        };
+        let mut acc = [0.0f32; 4];
+        for y in 0..h {
+            for x in 0..w {
+                let i = y * w + x;
+                let own = self.canvas.label[i];
+                if own == UNCOVERED {
+                    continue;
+                }
+                let mut mixed = false;
+                acc[..c].iter_mut().for_each(|v| *v = 0.0);
+                let mut total = 0.0;
+                for dy in -r..=r {
+                    for dx in -r..=r {
+                        let (nx, ny) = (
+                            edge.resolve(x as isize + dx, w),
+                            edge.resolve(y as isize + dy, h),
+                        );
+                        let label = self.canvas.label[ny * w + nx];
+                        if label == UNCOVERED {
+                            continue;
+                        }
+                        mixed |= label != own;
+                        let g = (-((dx * dx + dy * dy) as f32) / (2.0 * sigma2)).exp();
+                        let value = self.patch_value(self.canvas.patches[label as usize], i);
+                        for k in 0..c {
+                            acc[k] += g * value[k];
+                        }
+                        total += g;
+                    }
+                }
+                if mixed {
+                    for k in 0..c {
+                        out.pixel_mut(x, y)[k] = acc[k] / total;
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// Multi-resolution splining: every patch present in the output contributes its Laplacian
+    /// pyramid weighted by the Gaussian pyramid of its cut mask; the bands are summed and
+    /// collapsed. Where a patch does not reach, it shows the output itself, so its pyramid has
+    /// no false edges there.
+    pub fn splined(&self) -> Result<Image> {
+        let (w, h, c) = (
+            self.canvas.width,
+            self.canvas.height,
+            self.canvas.pixels.channels(),
+        );
+        let edge = if self.canvas.wrap {
+            Edge::Wrap
+        } else {
+            Edge::Clamp
+        };
+        let mut present: Vec<u32> = self
+            .canvas
+            .label
+            .iter()
+            .copied()
+            .filter(|&l| l != UNCOVERED)
+            .collect();
+        present.sort_unstable();
+        present.dedup();
+        let levels = SPLINE_LEVELS.min(1 + (w.min(h) as f32).log2().floor() as usize);
+        let mut bands: Vec<Image> = gaussian_pyramid(&self.canvas.pixels, levels, edge)?
+            .iter()
+            .map(|l| Image::new(l.width(), l.height(), c))
+            .collect::<Result<_>>()?;
+        for &label in &present {
+            let patch = self.canvas.patches[label as usize];
+            let mut image = self.canvas.pixels.clone();
+            for i in 0..w * h {
+                image.data_mut()[i * c..(i + 1) * c].copy_from_slice(self.patch_value(patch, i));
+            }
+            let mask_data: Vec<f32> = self
+                .canvas
+                .label
+                .iter()
+                .map(|&l| if l == label { 1.0 } else { 0.0 })
+                .collect();
+            let mask = Image::from_vec(w, h, 1, mask_data)?;
+            let gaussians = gaussian_pyramid(&image, levels, edge)?;
+            let masks = gaussian_pyramid(&mask, levels, edge)?;
+            for k in 0..levels {
+                // Laplacian band: this level minus the next one up-sampled (the top keeps the rest).
+                let band = if k + 1 < levels {
+                    let up = resize_bilinear(
+                        &gaussians[k + 1],
+                        gaussians[k].width(),
+                        gaussians[k].height(),
+                        edge,
+                    )?;
+                    subtract(&gaussians[k], &up)
+                } else {
+                    gaussians[k].clone()
+                };
+                let m = masks[k].data();
+                for (p, (dst, src)) in bands[k]
+                    .data_mut()
+                    .chunks_exact_mut(c)
+                    .zip(band.data().chunks_exact(c))
+                    .enumerate()
+                {
+                    for (d, s) in dst.iter_mut().zip(src) {
+                        *d += m[p] * s;
+                    }
+                }
+            }
+        }
+        // Collapse from the coarsest band.
+        let mut image = bands.pop().expect("at least one level");
+        while let Some(band) = bands.pop() {
+            let up = resize_bilinear(&image, band.width(), band.height(), edge)?;
+            image = add(&band, &up);
+        }
+        Ok(image)
+    }
+}
+
+fn subtract(a: &Image, b: &Image) -> Image {
+    let data = a.data().iter().zip(b.data()).map(|(x, y)| x - y).collect();
+    Image::from_vec(a.width(), a.height(), a.channels(), data).expect("same size")
+}
+
+fn add(a: &Image, b: &Image) -> Image {
+    let data = a.data().iter().zip(b.data()).map(|(x, y)| x + y).collect();
+    Image::from_vec(a.width(), a.height(), a.channels(), data).expect("same size")
+}

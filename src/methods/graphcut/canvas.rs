@@ -1,0 +1,152 @@
+//! The output being synthesised: its pixels, which patch every pixel came from (the label map),
+//! and the cost of the seam on every edge between neighbouring pixels, remembered so that later
+//! patches can overwrite bad old seams (section 3.1).
+
+use super::source::Source;
+use crate::core::{Image, Result};
+
+/// Label of a pixel no patch has covered yet.
+pub const UNCOVERED: u32 = u32::MAX;
+
+/// A placed patch: the whole of `source`, translated by (tx, ty): output pixel p copies source
+/// pixel p - t (modulo the output size when wrapping).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Patch {
+    pub source: u32,
+    pub tx: i32,
+    pub ty: i32,
+}
+
+/// The output and its seam memory.
+#[derive(Debug, Clone)]
+pub struct Canvas {
+    pub width: usize,
+    pub height: usize,
+    pub wrap: bool,
+    pub pixels: Image,
+    /// Patch index of every pixel, or [`UNCOVERED`].
+    pub label: Vec<u32>,
+    pub patches: Vec<Patch>,
+    /// Seam cost of the edge between (x, y) and its right neighbour, at `y * width + x`; zero
+    /// where both pixels come from the same patch.
+    pub h_seam: Vec<f32>,
+    /// Seam cost of the edge between (x, y) and the pixel below.
+    pub v_seam: Vec<f32>,
+    pub covered: usize,
+}
+
+impl Canvas {
+    pub fn new(width: usize, height: usize, channels: usize, wrap: bool) -> Result<Canvas> {
+        Ok(Canvas {
+            width,
+            height,
+            wrap,
+            pixels: Image::new(width, height, channels)?,
+            label: vec![UNCOVERED; width * height],
+            patches: Vec::new(),
+            h_seam: vec![0.0; width * height],
+            v_seam: vec![0.0; width * height],
+            covered: 0,
+        })
+    }
+
+    #[must_use]
+    pub fn is_covered(&self) -> bool {
+        self.covered == self.width * self.height
+    }
+
+    /// The right neighbour of pixel `i`, wrapping or not.
+    #[inline]
+    #[must_use]
+    pub fn right(&self, i: usize) -> Option<usize> {
+        let x = i % self.width;
+        if x + 1 < self.width {
+            Some(i + 1)
+        } else if self.wrap && self.width > 1 {
+            Some(i + 1 - self.width)
+        } else {
+            None
+        }
+    }
+
+    /// The neighbour below pixel `i`.
+    #[inline]
+    #[must_use]
+    pub fn down(&self, i: usize) -> Option<usize> {
+        if i + self.width < self.width * self.height {
+            Some(i + self.width)
+        } else if self.wrap && self.height > 1 {
+            Some(i + self.width - self.width * self.height)
+        } else {
+            None
+        }
+    }
+
+    /// The source coordinates patch `patch` would copy to output pixel (x, y), if it covers it.
+    #[inline]
+    #[must_use]
+    pub fn source_coords(
+        &self,
+        patch: Patch,
+        source: &Source,
+        x: usize,
+        y: usize,
+    ) -> Option<(usize, usize)> {
+        let (mut sx, mut sy) = (
+            x as i64 - i64::from(patch.tx),
+            y as i64 - i64::from(patch.ty),
+        );
+        if self.wrap {
+            sx = sx.rem_euclid(self.width as i64);
+            sy = sy.rem_euclid(self.height as i64);
+        }
+        ((0..source.width() as i64).contains(&sx) && (0..source.height() as i64).contains(&sy))
+            .then_some((sx as usize, sy as usize))
+    }
+
+    /// Per-pixel seam error: the sum of the seam costs on the pixel's edges (the error map that
+    /// drives placement once the output is covered).
+    #[must_use]
+    pub fn seam_error(&self) -> Vec<f32> {
+        let mut error = vec![0.0f32; self.width * self.height];
+        for i in 0..error.len() {
+            if let Some(j) = self.right(i) {
+                error[i] += self.h_seam[i];
+                error[j] += self.h_seam[i];
+            }
+            if let Some(j) = self.down(i) {
+                error[i] += self.v_seam[i];
+                error[j] += self.v_seam[i];
+            }
+        }
+        error
+    }
+
+    /// Sum of every seam cost in the output.
+    #[must_use]
+    pub fn total_seam_cost(&self) -> f64 {
+        self.h_seam
+            .iter()
+            .chain(&self.v_seam)
+            .map(|&c| f64::from(c))
+            .sum()
+    }
+
+    /// 1 where a pixel's right or lower neighbour comes from a different patch (the seam map).
+    #[must_use]
+    pub fn seam_map(&self) -> Vec<u8> {
+        let mut map = vec![0u8; self.width * self.height];
+        for i in 0..map.len() {
+            for j in [self.right(i), self.down(i)].into_iter().flatten() {
+                if self.label[i] != self.label[j]
+                    && self.label[i] != UNCOVERED
+                    && self.label[j] != UNCOVERED
+                {
+                    map[i] = 1;
+                    map[j] = 1;
+                }
+            }
+        }
+        map
+    }
+}

@@ -1,0 +1,20 @@
+//! Graph-cut textures (Kwatra, Schödl, Essa, Turk & Bobick 2003): the output grows by whole
+//! translated copies of the exemplar, each cut along the minimum-cost seam found by max-flow, with
+//! old seams remembered so later patches can overwrite them; offsets are chosen at random or by
+//! FFT-accelerated SSD matching.
+
+pub mod blend;
+pub mod canvas;
+pub mod cost;
+pub mod options;
+pub mod placement;
+pub mod seam;
+pub mod session;
+pub mod source;
+pub mod synthesis;
+
+#[cfg(test)]
+mod tests;
+
+pub use options::{Blend, Options, Placement, Transforms};
+pub use session::{Event, Session};

@@ -1,0 +1,287 @@
+//! Choosing where the next patch goes (section 4): an error region first, then an unused offset
+//! whose patch covers it, at random or by matching (entire patch, eq. 2; sub-patch, eq. 4), drawn
+//! with probability exp(-C / (k sigma^2)) (eq. 3). Costs come from the FFT SSD search (section 5).
+
+use super::canvas::{Patch, UNCOVERED};
+use super::options::Placement;
+use super::synthesis::Synthesis;
+use crate::core::Result;
+use crate::solvers::fft_ssd::Boundary;
+
+/// A rectangle of the output (it may run past the right or bottom border when wrapping).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Region {
+    pub x: usize,
+    pub y: usize,
+    pub width: usize,
+    pub height: usize,
+}
+
+/// An offset to try and its matching cost (0 for random placement).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Candidate {
+    pub patch: Patch,
+    pub cost: f32,
+}
+
+impl Synthesis {
+    /// The region the next patch must cover. While the output is not covered: a square around
+    /// the first uncovered pixel in scan order, so it holds both covered and uncovered pixels
+    /// and the texture grows consistently with what is there. Once covered: the square with the
+    /// largest total seam error.
+    #[must_use]
+    pub fn error_region(&self) -> Region {
+        let side = self
+            .options
+            .error_region_side(self.sources[0].width(), self.sources[0].height());
+        let (w, h) = (self.canvas.width, self.canvas.height);
+        let clamp = |c: usize, len: usize| c.saturating_sub(side / 2).min(len - side);
+        if !self.canvas.is_covered() {
+            let first = self
+                .canvas
+                .label
+                .iter()
+                .position(|&l| l == UNCOVERED)
+                .expect("not covered");
+            let (x, y) = (first % w, first / w);
+            return Region {
+                x: clamp(x, w),
+                y: clamp(y, h),
+                width: side,
+                height: side,
+            };
+        }
+        let error = self.canvas.seam_error();
+        let sums = box_sums(&error, w, h, side, self.canvas.wrap);
+        let best = (0..sums.len()).fold(0, |best, i| if sums[i] > sums[best] { i } else { best });
+        Region {
+            x: best % w,
+            y: best / w,
+            width: side,
+            height: side,
+        }
+    }
+
+    /// Every unused offset of every allowed source whose patch covers `region` entirely.
+    #[must_use]
+    pub fn candidates(&self, region: Region) -> Vec<Patch> {
+        let mut out = Vec::new();
+        for (s, source) in self.sources.iter().enumerate() {
+            if !self.source_allowed(s, region) {
+                continue;
+            }
+            let (sw, sh) = self.patch_extent(s);
+            if sw < region.width || sh < region.height {
+                continue;
+            }
+            let (x0, y0) = (region.x as i64, region.y as i64);
+            let (x1, y1) = (x0 + region.width as i64, y0 + region.height as i64);
+            let _ = source;
+            for ty in (y1 - sh as i64)..=y0 {
+                for tx in (x1 - sw as i64)..=x0 {
+                    let (tx, ty) = if self.canvas.wrap {
+                        (
+                            tx.rem_euclid(self.canvas.width as i64),
+                            ty.rem_euclid(self.canvas.height as i64),
+                        )
+                    } else {
+                        (tx, ty)
+                    };
+                    let patch = Patch {
+                        source: s as u32,
+                        tx: tx as i32,
+                        ty: ty as i32,
+                    };
+                    if !self.used.contains(&patch) {
+                        out.push(patch);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The part of source `s` a patch uses: all of it, or at most the output size when wrapping
+    /// (a larger patch would overlap itself).
+    #[must_use]
+    pub fn patch_extent(&self, s: usize) -> (usize, usize) {
+        let source = &self.sources[s];
+        if self.canvas.wrap {
+            (
+                source.width().min(self.canvas.width),
+                source.height().min(self.canvas.height),
+            )
+        } else {
+            (source.width(), source.height())
+        }
+    }
+
+    /// With perspective on, each band of output rows takes only the source whose scale belongs
+    /// there: scales rise monotonically from the top row (smallest) to the bottom (largest).
+    fn source_allowed(&self, s: usize, region: Region) -> bool {
+        if !self.options.transforms.perspective {
+            return true;
+        }
+        let mut scales: Vec<f32> = self.sources.iter().map(|src| src.scale).collect();
+        scales.sort_by(f32::total_cmp);
+        scales.dedup();
+        let centre = (region.y + region.height / 2) as f32 / self.canvas.height as f32;
+        let band = ((centre * scales.len() as f32) as usize).min(scales.len() - 1);
+        self.sources[s].scale == scales[band]
+    }
+
+    /// The matching cost of every candidate (empty costs for random placement).
+    pub fn score(&mut self, region: Region, candidates: &[Patch]) -> Result<Vec<Candidate>> {
+        if self.options.placement == Placement::Random || self.canvas.covered == 0 {
+            return Ok(candidates
+                .iter()
+                .map(|&patch| Candidate { patch, cost: 0.0 })
+                .collect());
+        }
+        let (w, h) = (self.canvas.width, self.canvas.height);
+        let sub_patch = self.options.placement == Placement::SubPatch;
+        // Weights on the output: covered pixels (eq. 2), and only inside the error region (the
+        // output sub-patch of eq. 4) for sub-patch matching.
+        let mut weights = vec![0.0f32; w * h];
+        for (i, weight) in weights.iter_mut().enumerate() {
+            let inside =
+                !sub_patch || region_contains(region, i % w, i / w, w, h, self.canvas.wrap);
+            if inside && self.canvas.label[i] != UNCOVERED {
+                *weight = 1.0;
+            }
+        }
+        let boundary = if self.canvas.wrap {
+            Boundary::Periodic
+        } else {
+            Boundary::Open
+        };
+        let mut scored = Vec::with_capacity(candidates.len());
+        for s in 0..self.sources.len() {
+            let of_source: Vec<Patch> = candidates
+                .iter()
+                .copied()
+                .filter(|p| p.source as usize == s)
+                .collect();
+            if of_source.is_empty() {
+                continue;
+            }
+            let (pw, ph) = self.patch_extent(s);
+            let patch_image = self.sources[s].image.crop(0, 0, pw, ph)?;
+            let map = self.ssd.search(
+                &self.canvas.pixels,
+                Some(&weights),
+                &patch_image,
+                None,
+                boundary,
+            )?;
+            for patch in of_source {
+                let (cost, area) = map
+                    .get(patch.tx as isize, patch.ty as isize)
+                    .unwrap_or((0.0, 0.0));
+                // Area-normalised (eq. 2); for sub-patches too, so that k means the same thing.
+                let cost = if area > 0.5 {
+                    cost / area
+                } else {
+                    f32::INFINITY
+                };
+                scored.push(Candidate { patch, cost });
+            }
+        }
+        Ok(scored)
+    }
+
+    /// Draws a candidate with probability proportional to exp(-C / (k sigma^2)) (eq. 3).
+    pub fn choose(&mut self, scored: &[Candidate]) -> Option<Patch> {
+        if scored.is_empty() {
+            return None;
+        }
+        let best = scored.iter().map(|c| c.cost).fold(f32::INFINITY, f32::min);
+        if !best.is_finite() {
+            return Some(scored[self.rng.index(scored.len())].patch);
+        }
+        let scale = f64::from(self.options.k) * f64::from(self.sigma).powi(2);
+        // Relative to the best cost, so the largest weight is 1 and nothing underflows to 0 everywhere.
+        let weights: Vec<f64> = scored
+            .iter()
+            .map(|c| (-(f64::from(c.cost) - f64::from(best)) / scale).exp())
+            .collect();
+        let total: f64 = weights.iter().sum();
+        let mut pick = self.rng.next_f64() * total;
+        for (candidate, weight) in scored.iter().zip(&weights) {
+            if pick < *weight {
+                return Some(candidate.patch);
+            }
+            pick -= weight;
+        }
+        scored
+            .iter()
+            .zip(&weights)
+            .rev()
+            .find(|(_, w)| **w > 0.0)
+            .map(|(c, _)| c.patch)
+    }
+}
+
+/// Whether output pixel (x, y) lies in `region`.
+#[must_use]
+pub fn region_contains(region: Region, x: usize, y: usize, w: usize, h: usize, wrap: bool) -> bool {
+    let inside = |p: usize, start: usize, len: usize, size: usize| {
+        if wrap {
+            (p + size - start) % size < len
+        } else {
+            p >= start && p < start + len
+        }
+    };
+    inside(x, region.x, region.width, w) && inside(y, region.y, region.height, h)
+}
+
+/// Sum of `values` over every `side` x `side` window, indexed by the window's top-left corner.
+/// Windows that would cross the border get -inf (or wrap around when `wrap`).
+#[must_use]
+pub fn box_sums(values: &[f32], w: usize, h: usize, side: usize, wrap: bool) -> Vec<f32> {
+    let mut rows = vec![f32::NEG_INFINITY; w * h];
+    for y in 0..h {
+        for x in 0..w {
+            if wrap || x + side <= w {
+                rows[y * w + x] = (0..side).map(|d| values[y * w + (x + d) % w]).sum();
+            }
+        }
+    }
+    let mut sums = vec![f32::NEG_INFINITY; w * h];
+    for y in 0..h {
+        for x in 0..w {
+            if wrap || y + side <= h {
+                sums[y * w + x] = (0..side).map(|d| rows[((y + d) % h) * w + x]).sum();
+            }
+        }
+    }
+    sums
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn box_sums_match_a_direct_sum() {
+        let values: Vec<f32> = (0..30).map(|i| (i * 7 % 5) as f32).collect();
+        let sums = box_sums(&values, 6, 5, 2, false);
+        assert_eq!(sums[0], values[0] + values[1] + values[6] + values[7]);
+        assert_eq!(sums[5], f32::NEG_INFINITY);
+        let wrapped = box_sums(&values, 6, 5, 2, true);
+        assert_eq!(wrapped[29], values[29] + values[24] + values[5] + values[0]);
+    }
+
+    #[test]
+    fn regions_wrap() {
+        let r = Region {
+            x: 4,
+            y: 0,
+            width: 3,
+            height: 2,
+        };
+        assert!(region_contains(r, 0, 1, 6, 5, true));
+        assert!(!region_contains(r, 0, 1, 6, 5, false));
+        assert!(region_contains(r, 5, 0, 6, 5, false));
+    }
+}

@@ -1,0 +1,174 @@
+//! Laying a patch down along the minimum-cost seam (sections 3, 3.1 and 3.2).
+//!
+//! The graph has a node per output pixel under the patch. The source terminal is A, the
+//! existing output; the sink terminal is B, the new patch. Pixels no patch covered yet must take
+//! B; covered pixels on the border of the patch whose outside neighbour is covered must keep A
+//! (a surrounded region keeps its border). Neighbouring pixels are joined by an arc of cost
+//! M(s, t, A, B). Where an old seam runs between two pixels, a seam node sits between them with
+//! arcs M(s, t, A_s, B) and M(s, t, B, A_t) to the pixels and an arc of the old seam's cost to B:
+//! cutting that arc keeps the old seam, cutting a pixel arc makes a new seam there, and cutting
+//! neither overwrites the seam (it then costs nothing).
+
+use super::canvas::{Patch, UNCOVERED};
+use super::synthesis::Synthesis;
+use crate::core::Result;
+use crate::solvers::maxflow::{Graph, HARD_CONSTRAINT};
+
+/// What a placement did.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Placed {
+    /// Index of the patch in the canvas's patch list.
+    pub index: usize,
+    pub patch: Patch,
+    /// Output pixels that now come from the new patch.
+    pub pixels_taken: usize,
+    /// Cost of the minimum cut (the seams within the patch after placement).
+    pub cut_cost: f64,
+}
+
+impl Synthesis {
+    /// Places `patch` with the seam the graph cut chooses. `force_new` names an output pixel that
+    /// must take the new patch (used when the patch lies over a fully covered region, so that it
+    /// cannot be rejected entirely).
+    pub fn place(&mut self, patch: Patch, force_new: Option<usize>) -> Result<Placed> {
+        let footprint = self.footprint(patch);
+        let (w, h) = (self.canvas.width, self.canvas.height);
+        // Node of every output pixel under the patch.
+        let mut node_of = vec![u32::MAX; w * h];
+        for (n, &i) in footprint.iter().enumerate() {
+            node_of[i] = n as u32;
+        }
+        let mut graph = Graph::with_capacity(footprint.len(), 2 * footprint.len())?;
+        let canvas = &self.canvas;
+        let covered = |i: usize| canvas.label[i] != UNCOVERED;
+        for (n, &i) in footprint.iter().enumerate() {
+            if !covered(i) {
+                graph.add_terminal(n, 0.0, HARD_CONSTRAINT)?;
+                continue;
+            }
+            let neighbours = [canvas.right(i), canvas.down(i), self.left(i), self.up(i)];
+            if neighbours
+                .into_iter()
+                .flatten()
+                .any(|j| node_of[j] == u32::MAX && covered(j))
+            {
+                graph.add_terminal(n, HARD_CONSTRAINT, 0.0)?;
+            }
+        }
+        if let Some(i) = force_new.filter(|&i| node_of[i] != u32::MAX) {
+            graph.add_terminal(node_of[i] as usize, 0.0, HARD_CONSTRAINT)?;
+        }
+        for (n, &s) in footprint.iter().enumerate() {
+            for (t, horizontal) in [(canvas.right(s), true), (canvas.down(s), false)] {
+                let Some(t) = t.filter(|&t| node_of[t] != u32::MAX) else {
+                    continue;
+                };
+                let m = node_of[t] as usize;
+                match (self.patch_of(s), self.patch_of(t)) {
+                    (None, None) => {}
+                    (Some(a_s), Some(a_t)) if a_s != a_t => {
+                        // An old seam: its node, its cost to B, and the two new-seam arcs.
+                        let old = if horizontal {
+                            canvas.h_seam[s]
+                        } else {
+                            canvas.v_seam[s]
+                        };
+                        let seam = graph.add_node();
+                        let to_s = self.seam_cost(s, t, horizontal, a_s, patch);
+                        let to_t = self.seam_cost(s, t, horizontal, patch, a_t);
+                        graph.add_edge(n, seam, to_s, to_s)?;
+                        graph.add_edge(seam, m, to_t, to_t)?;
+                        graph.add_terminal(seam, 0.0, old)?;
+                    }
+                    (a_s, a_t) => {
+                        let a = a_s.or(a_t).expect("one of them is covered");
+                        let cost = self.seam_cost(s, t, horizontal, a, patch);
+                        graph.add_edge(n, m, cost, cost)?;
+                    }
+                }
+            }
+        }
+        let cut_cost = graph.maxflow();
+        let index = self.canvas.patches.len();
+        self.canvas.patches.push(patch);
+        self.used.insert(patch);
+        let source = &self.sources[patch.source as usize];
+        let mut pixels_taken = 0;
+        for (n, &i) in footprint.iter().enumerate() {
+            if graph.is_source_side(n) {
+                continue;
+            }
+            let (x, y) = (i % w, i / w);
+            let (sx, sy) = self
+                .canvas
+                .source_coords(patch, source, x, y)
+                .expect("footprint pixels are covered by the patch");
+            self.canvas
+                .pixels
+                .pixel_mut(x, y)
+                .copy_from_slice(source.image.pixel(sx, sy));
+            if self.canvas.label[i] == UNCOVERED {
+                self.canvas.covered += 1;
+            }
+            self.canvas.label[i] = index as u32;
+            pixels_taken += 1;
+        }
+        self.update_seams(&footprint);
+        Ok(Placed {
+            index,
+            patch,
+            pixels_taken,
+            cut_cost,
+        })
+    }
+
+    /// Recomputes the remembered seam cost of every edge touching `pixels`.
+    fn update_seams(&mut self, pixels: &[usize]) {
+        for &i in pixels {
+            let edges = [
+                (Some(i), self.canvas.right(i), true),
+                (Some(i), self.canvas.down(i), false),
+                (self.left(i), Some(i), true),
+                (self.up(i), Some(i), false),
+            ];
+            for (s, t, horizontal) in edges {
+                let (Some(s), Some(t)) = (s, t) else { continue };
+                let cost = match (self.patch_of(s), self.patch_of(t)) {
+                    (Some(a), Some(b)) => self.seam_cost(s, t, horizontal, a, b),
+                    _ => 0.0,
+                };
+                if horizontal {
+                    self.canvas.h_seam[s] = cost;
+                } else {
+                    self.canvas.v_seam[s] = cost;
+                }
+            }
+        }
+    }
+
+    /// The left neighbour of pixel `i`.
+    #[must_use]
+    pub fn left(&self, i: usize) -> Option<usize> {
+        let w = self.canvas.width;
+        if i % w > 0 {
+            Some(i - 1)
+        } else if self.canvas.wrap && w > 1 {
+            Some(i + w - 1)
+        } else {
+            None
+        }
+    }
+
+    /// The neighbour above pixel `i`.
+    #[must_use]
+    pub fn up(&self, i: usize) -> Option<usize> {
+        let (w, n) = (self.canvas.width, self.canvas.width * self.canvas.height);
+        if i >= w {
+            Some(i - w)
+        } else if self.canvas.wrap && self.canvas.height > 1 {
+            Some(i + n - w)
+        } else {
+            None
+        }
+    }
+}

@@ -1,0 +1,127 @@
+//! The graph-cut texture session: `step()` places one patch (section 4 then section 3) and
+//! reports it; the session ends after the output is covered and the refinement patches are
+//! placed, or when no unused offset is left.
+
+use super::canvas::Patch;
+use super::options::{Blend, Options};
+use super::placement::Region;
+use super::synthesis::Synthesis;
+use crate::core::{Image, Result};
+
+/// What a step did.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Event {
+    /// True once the session has nothing left to do (this step may still have placed a patch).
+    pub done: bool,
+    /// The patch placed by this step (None when nothing could be placed).
+    pub patch: Option<Patch>,
+    /// Its rectangle in the output: left, top, width, height (may run past the border when
+    /// wrapping).
+    pub rect: (i64, i64, usize, usize),
+    /// The error region it had to cover.
+    pub region: Region,
+    pub pixels_taken: usize,
+    pub cut_cost: f64,
+    pub covered: bool,
+    pub total_seam_cost: f64,
+    pub patches_placed: usize,
+}
+
+/// A running graph-cut synthesis.
+pub struct Session {
+    synthesis: Synthesis,
+    refinements_done: usize,
+    finished: bool,
+    last_region: Option<Region>,
+    last: Option<Event>,
+}
+
+impl Session {
+    pub fn new(exemplar: &Image, options: Options) -> Result<Session> {
+        Ok(Session {
+            synthesis: Synthesis::new(exemplar, options)?,
+            refinements_done: 0,
+            finished: false,
+            last_region: None,
+            last: None,
+        })
+    }
+
+    #[must_use]
+    pub fn synthesis(&self) -> &Synthesis {
+        &self.synthesis
+    }
+
+    #[must_use]
+    pub fn is_done(&self) -> bool {
+        self.finished
+    }
+
+    /// The error region of the last placement.
+    #[must_use]
+    pub fn error_region(&self) -> Option<Region> {
+        self.last_region
+    }
+
+    /// Places one patch.
+    pub fn step(&mut self) -> Result<Event> {
+        if self.finished {
+            return Ok(self.last.expect("a finished session has stepped"));
+        }
+        let s = &mut self.synthesis;
+        let was_covered = s.canvas.is_covered();
+        let region = s.error_region();
+        let candidates = s.candidates(region);
+        let scored = s.score(region, &candidates)?;
+        let chosen = s.choose(&scored);
+        let mut event = Event {
+            done: false,
+            patch: chosen,
+            rect: (0, 0, 0, 0),
+            region,
+            pixels_taken: 0,
+            cut_cost: 0.0,
+            covered: was_covered,
+            total_seam_cost: s.canvas.total_seam_cost(),
+            patches_placed: s.canvas.patches.len(),
+        };
+        self.last_region = Some(region);
+        let Some(patch) = chosen else {
+            // No unused offset covers the region: nothing more can be done.
+            self.finished = true;
+            event.done = true;
+            self.last = Some(event);
+            return Ok(event);
+        };
+        // Over a fully covered region, force the region's centre to take the new patch so that a
+        // placement cannot be rejected whole (section 3.2).
+        let centre = ((region.y + region.height / 2) % s.canvas.height) * s.canvas.width
+            + (region.x + region.width / 2) % s.canvas.width;
+        let placed = s.place(patch, was_covered.then_some(centre))?;
+        let (pw, ph) = s.patch_extent(patch.source as usize);
+        event.rect = (i64::from(patch.tx), i64::from(patch.ty), pw, ph);
+        event.pixels_taken = placed.pixels_taken;
+        event.cut_cost = placed.cut_cost;
+        event.covered = s.canvas.is_covered();
+        event.total_seam_cost = s.canvas.total_seam_cost();
+        event.patches_placed = s.canvas.patches.len();
+        if was_covered {
+            self.refinements_done += 1;
+        }
+        if event.covered && self.refinements_done >= s.options.refinement_patches {
+            self.finished = true;
+            event.done = true;
+        }
+        self.last = Some(event);
+        Ok(event)
+    }
+
+    /// The output with the chosen blending applied.
+    pub fn output(&self) -> Result<Image> {
+        match self.synthesis.options.blend {
+            Blend::None => Ok(self.synthesis.canvas.pixels.clone()),
+            Blend::Feather => Ok(self.synthesis.feathered()),
+            Blend::Spline => self.synthesis.splined(),
+        }
+    }
+}

@@ -1,0 +1,140 @@
+//! The state of a graph-cut synthesis: the sources, the canvas with its seam memory, and the
+//! offsets already used. Placement (`placement.rs`) and seam finding (`seam.rs`) extend it.
+
+use std::collections::HashSet;
+
+use super::canvas::{Canvas, Patch};
+use super::cost::{Sample, match_cost};
+use super::options::Options;
+use super::source::{Source, build_sources};
+use crate::core::{Image, Result, Rng};
+use crate::solvers::fft_ssd::SsdSearch;
+
+/// Sources, canvas and history of one synthesis.
+pub struct Synthesis {
+    pub options: Options,
+    pub sources: Vec<Source>,
+    pub canvas: Canvas,
+    pub rng: Rng,
+    /// Offsets already placed (section 4: only unused offsets are considered).
+    pub used: HashSet<Patch>,
+    /// Standard deviation of the exemplar's values (sigma of eq. 3).
+    pub sigma: f32,
+    /// The FFT SSD search, kept between placements for its plans and buffers.
+    pub ssd: SsdSearch,
+}
+
+impl Synthesis {
+    pub fn new(exemplar: &Image, options: Options) -> Result<Synthesis> {
+        options.validate(exemplar.width(), exemplar.height())?;
+        let sources = build_sources(exemplar, &options.transforms)?;
+        let canvas = Canvas::new(
+            options.output_width,
+            options.output_height,
+            exemplar.channels(),
+            options.tileable,
+        )?;
+        let data = exemplar.data();
+        let mean = data.iter().map(|&v| f64::from(v)).sum::<f64>() / data.len() as f64;
+        let var = data
+            .iter()
+            .map(|&v| (f64::from(v) - mean).powi(2))
+            .sum::<f64>()
+            / data.len() as f64;
+        Ok(Synthesis {
+            rng: Rng::new(options.seed),
+            sigma: (var.sqrt() as f32).max(1e-3),
+            options,
+            sources,
+            canvas,
+            used: HashSet::new(),
+            ssd: SsdSearch::new(),
+        })
+    }
+
+    /// What patch `patch` shows at output pixel `i`, with its gradient across a horizontal edge
+    /// (`horizontal`) or a vertical one. A patch that does not cover the pixel shows the current
+    /// output there, so a seam term it cannot see costs nothing.
+    #[inline]
+    #[must_use]
+    pub fn sample(&self, patch: Patch, i: usize, horizontal: bool) -> Sample<'_> {
+        let (x, y) = (i % self.canvas.width, i / self.canvas.width);
+        let source = &self.sources[patch.source as usize];
+        match self.canvas.source_coords(patch, source, x, y) {
+            Some((sx, sy)) => {
+                let k = sy * source.width() + sx;
+                Sample {
+                    colour: source.image.pixel(sx, sy),
+                    gradient: if horizontal {
+                        source.grad_x[k]
+                    } else {
+                        source.grad_y[k]
+                    },
+                }
+            }
+            None => Sample {
+                colour: self.canvas.pixels.pixel(x, y),
+                gradient: 0.0,
+            },
+        }
+    }
+
+    /// The seam cost M(s, t, A, B) for neighbouring output pixels `s`, `t` (t right of or below
+    /// s) when s shows patch `a` and t shows patch `b`. Zero when they are the same patch.
+    #[must_use]
+    pub fn seam_cost(&self, s: usize, t: usize, horizontal: bool, a: Patch, b: Patch) -> f32 {
+        if a == b {
+            return 0.0;
+        }
+        let gradient = self.options.gradient_cost;
+        match_cost(
+            self.sample(a, s, horizontal),
+            self.sample(b, s, horizontal),
+            self.sample(a, t, horizontal),
+            self.sample(b, t, horizontal),
+            gradient,
+        )
+    }
+
+    /// The patch of a labelled pixel.
+    #[inline]
+    #[must_use]
+    pub fn patch_of(&self, i: usize) -> Option<Patch> {
+        let label = self.canvas.label[i];
+        (label != super::canvas::UNCOVERED).then(|| self.canvas.patches[label as usize])
+    }
+
+    /// The footprint of `patch` in the output: the output pixels it covers, in source scan order.
+    #[must_use]
+    pub fn footprint(&self, patch: Patch) -> Vec<usize> {
+        let source = &self.sources[patch.source as usize];
+        let (w, h) = (self.canvas.width as i64, self.canvas.height as i64);
+        let (sw, sh) = if self.canvas.wrap {
+            (
+                source.width().min(self.canvas.width),
+                source.height().min(self.canvas.height),
+            )
+        } else {
+            (source.width(), source.height())
+        };
+        let mut pixels = Vec::with_capacity(sw * sh);
+        for v in 0..sh as i64 {
+            let mut y = i64::from(patch.ty) + v;
+            if self.canvas.wrap {
+                y = y.rem_euclid(h);
+            } else if !(0..h).contains(&y) {
+                continue;
+            }
+            for u in 0..sw as i64 {
+                let mut x = i64::from(patch.tx) + u;
+                if self.canvas.wrap {
+                    x = x.rem_euclid(w);
+                } else if !(0..w).contains(&x) {
+                    continue;
+                }
+                pixels.push((y * w + x) as usize);
+            }
+        }
+        pixels
+    }
+}

@@ -1,0 +1,475 @@
+//! Graph-cut texture tests: seams against the cost the paper defines, placement rules, coverage,
+//! determinism, blending.
+
+use super::canvas::{Patch, UNCOVERED};
+use super::options::{Blend, Options, Placement, Transforms};
+use super::session::Session;
+use super::synthesis::Synthesis;
+use crate::core::{Image, Rng, decode};
+
+fn sample(name: &str) -> Image {
+    let path = format!("{}/www/samples/{name}.png", env!("CARGO_MANIFEST_DIR"));
+    decode(&std::fs::read(path).unwrap()).unwrap()
+}
+
+fn noise(w: usize, h: usize, c: usize, seed: u64) -> Image {
+    let mut rng = Rng::new(seed);
+    Image::from_fn(w, h, c, |_, _, _| rng.next_f32()).unwrap()
+}
+
+/// Every covered pixel shows exactly what its patch's source has at that place.
+fn assert_pixels_match_labels(s: &Synthesis) {
+    let w = s.canvas.width;
+    for (i, &label) in s.canvas.label.iter().enumerate() {
+        if label == UNCOVERED {
+            continue;
+        }
+        let patch = s.canvas.patches[label as usize];
+        let source = &s.sources[patch.source as usize];
+        let (sx, sy) = s
+            .canvas
+            .source_coords(patch, source, i % w, i / w)
+            .expect("the patch covers its pixels");
+        assert_eq!(
+            s.canvas.pixels.pixel(i % w, i / w),
+            source.image.pixel(sx, sy)
+        );
+    }
+}
+
+/// The seam energy of the whole output from the labels alone: every edge between different
+/// patches costs M of those patches (old seams are stored with exactly that cost).
+fn seam_energy(s: &Synthesis) -> f64 {
+    let mut total = 0.0;
+    for i in 0..s.canvas.label.len() {
+        for (j, horizontal) in [(s.canvas.right(i), true), (s.canvas.down(i), false)] {
+            let Some(j) = j else { continue };
+            if let (Some(a), Some(b)) = (s.patch_of(i), s.patch_of(j)) {
+                total += f64::from(s.seam_cost(i, j, horizontal, a, b));
+            }
+        }
+    }
+    total
+}
+
+#[test]
+fn the_cut_is_the_cheapest_labelling_including_old_seams() {
+    // Old seams everywhere: a checkerboard of small patches first, then big patches over them.
+    let exemplar = noise(12, 12, 3, 1);
+    let options = Options {
+        output_width: 20,
+        output_height: 16,
+        ..Options::default()
+    };
+    let mut s = Synthesis::new(&exemplar, options).unwrap();
+    for (tx, ty) in [(0, 0), (8, 0), (0, 6), (9, 5), (5, 8), (14, 9), (10, 4)] {
+        s.place(Patch { source: 0, tx, ty }, None).unwrap();
+    }
+    assert_pixels_match_labels(&s);
+    let mut rng = Rng::new(4);
+    for _ in 0..12 {
+        let patch = Patch {
+            source: 0,
+            tx: rng.index(18) as i32 - 6,
+            ty: rng.index(14) as i32 - 6,
+        };
+        let before = s.clone_state();
+        let outside_before = seam_energy_outside(&s, patch);
+        let placed = s.place(patch, None).unwrap();
+        assert_pixels_match_labels(&s);
+        // The cut value is the seam energy inside the patch after placement (old seams kept,
+        // new seams made), so the whole output's energy is the outside part plus the cut.
+        let after = seam_energy(&s);
+        let outside_after = seam_energy_outside(&s, patch);
+        assert!(
+            (outside_after - outside_before).abs() < 1e-3,
+            "nothing outside the patch changes"
+        );
+        assert!(
+            (after - outside_after - placed.cut_cost).abs() < 1e-3 * after.max(1.0),
+            "cut {} vs energy {}",
+            placed.cut_cost,
+            after - outside_after
+        );
+        // And no labelling the cut could have chosen is cheaper: keeping everything old, or
+        // flipping any single free pixel of the result.
+        let mut keep = before.clone_state();
+        keep.place_keeping_old(patch);
+        assert!(after <= seam_energy(&keep) + 1e-3);
+        for i in s.footprint(patch) {
+            if let Some(flipped) = s.flip(&before, patch, i) {
+                assert!(
+                    after <= seam_energy(&flipped) + 1e-3,
+                    "flipping pixel {i} would be cheaper"
+                );
+            }
+        }
+    }
+}
+
+/// Seam energy of edges with no pixel under `patch`.
+fn seam_energy_outside(s: &Synthesis, patch: Patch) -> f64 {
+    let under: std::collections::HashSet<usize> = s.footprint(patch).into_iter().collect();
+    let mut total = 0.0;
+    for i in 0..s.canvas.label.len() {
+        for (j, horizontal) in [(s.canvas.right(i), true), (s.canvas.down(i), false)] {
+            let Some(j) = j else { continue };
+            if under.contains(&i) || under.contains(&j) {
+                continue;
+            }
+            if let (Some(a), Some(b)) = (s.patch_of(i), s.patch_of(j)) {
+                total += f64::from(s.seam_cost(i, j, horizontal, a, b));
+            }
+        }
+    }
+    total
+}
+
+impl Synthesis {
+    fn clone_state(&self) -> Synthesis {
+        Synthesis {
+            options: self.options.clone(),
+            sources: self.sources.clone(),
+            canvas: self.canvas.clone(),
+            rng: self.rng.clone(),
+            used: self.used.clone(),
+            sigma: self.sigma,
+            ssd: crate::solvers::fft_ssd::SsdSearch::new(),
+        }
+    }
+
+    /// `patch` placed taking only the pixels it must (uncovered ones).
+    fn place_keeping_old(&mut self, patch: Patch) {
+        let index = self.canvas.patches.len() as u32;
+        self.canvas.patches.push(patch);
+        for i in self.footprint(patch) {
+            if self.canvas.label[i] == UNCOVERED {
+                self.canvas.label[i] = index;
+            }
+        }
+    }
+
+    /// The labelling `self` reached from `before` by placing `patch`, with pixel `i` flipped to
+    /// the other choice, if that flip is allowed (not a constrained pixel).
+    fn flip(&self, before: &Synthesis, patch: Patch, i: usize) -> Option<Synthesis> {
+        if before.canvas.label[i] == UNCOVERED {
+            return None; // must take the new patch
+        }
+        let under: std::collections::HashSet<usize> = self.footprint(patch).into_iter().collect();
+        let border = [
+            self.canvas.right(i),
+            self.canvas.down(i),
+            self.left(i),
+            self.up(i),
+        ]
+        .into_iter()
+        .flatten()
+        .any(|j| !under.contains(&j) && before.canvas.label[j] != UNCOVERED);
+        if border {
+            return None; // must keep the old texture
+        }
+        let mut flipped = self.clone_state();
+        let new_label = (self.canvas.patches.len() - 1) as u32;
+        flipped.canvas.label[i] = if self.canvas.label[i] == new_label {
+            before.canvas.label[i]
+        } else {
+            new_label
+        };
+        Some(flipped)
+    }
+}
+
+#[test]
+fn a_surrounded_region_keeps_its_border() {
+    let exemplar = sample("gravel_64");
+    let mut session = Session::new(
+        &exemplar,
+        Options {
+            output_width: 96,
+            output_height: 96,
+            refinement_patches: 0,
+            ..Options::default()
+        },
+    )
+    .unwrap();
+    while !session.step().unwrap().covered {}
+    let mut s = session.synthesis().clone_state();
+    let before = s.canvas.label.clone();
+    let patch = Patch {
+        source: 0,
+        tx: 16,
+        ty: 16,
+    };
+    let placed = s.place(patch, Some(48 * 96 + 48)).unwrap();
+    assert!(placed.pixels_taken >= 1);
+    assert_eq!(
+        s.canvas.label[48 * 96 + 48] as usize,
+        placed.index,
+        "the forced pixel takes the patch"
+    );
+    for i in s.footprint(patch) {
+        let (x, y) = (i % 96, i / 96);
+        if x == 16 || y == 16 || x == 79 || y == 79 {
+            assert_eq!(
+                s.canvas.label[i], before[i],
+                "border pixel ({x}, {y}) keeps the old texture"
+            );
+        }
+    }
+}
+
+fn run(exemplar: &Image, options: Options) -> (Session, Vec<super::Event>) {
+    let mut session = Session::new(exemplar, options).unwrap();
+    let mut events = Vec::new();
+    loop {
+        let event = session.step().unwrap();
+        events.push(event);
+        if event.done {
+            return (session, events);
+        }
+    }
+}
+
+#[test]
+fn every_placement_mode_covers_the_output_without_reusing_an_offset() {
+    let exemplar = sample("tiles_64");
+    for placement in [
+        Placement::Random,
+        Placement::EntirePatch,
+        Placement::SubPatch,
+    ] {
+        let options = Options {
+            output_width: 100,
+            output_height: 90,
+            placement,
+            refinement_patches: 6,
+            ..Options::default()
+        };
+        let (session, events) = run(&exemplar, options);
+        let s = session.synthesis();
+        assert!(s.canvas.is_covered(), "{placement:?}");
+        assert!(s.canvas.label.iter().all(|&l| l != UNCOVERED));
+        assert_pixels_match_labels(s);
+        let unique: std::collections::HashSet<Patch> = s.canvas.patches.iter().copied().collect();
+        assert_eq!(
+            unique.len(),
+            s.canvas.patches.len(),
+            "{placement:?} reused an offset"
+        );
+        let covered_at = events.iter().position(|e| e.covered).unwrap();
+        assert_eq!(
+            events.len() - covered_at - 1,
+            6,
+            "six refinement patches after covering"
+        );
+        assert!(
+            (seam_energy(s) - events.last().unwrap().total_seam_cost).abs()
+                < 1e-2 * seam_energy(s).max(1.0)
+        );
+    }
+}
+
+#[test]
+fn same_seed_same_output() {
+    let exemplar = sample("brick_64");
+    let options = Options {
+        output_width: 80,
+        output_height: 80,
+        refinement_patches: 4,
+        ..Options::default()
+    };
+    let a = run(&exemplar, options.clone()).0.output().unwrap();
+    let b = run(&exemplar, options.clone()).0.output().unwrap();
+    let c = run(&exemplar, Options { seed: 9, ..options })
+        .0
+        .output()
+        .unwrap();
+    assert_eq!(a, b);
+    assert_ne!(a, c);
+}
+
+#[test]
+fn matching_costs_equal_a_direct_area_normalised_ssd() {
+    let exemplar = noise(16, 12, 3, 3);
+    let mut s = Synthesis::new(
+        &exemplar,
+        Options {
+            output_width: 30,
+            output_height: 24,
+            ..Options::default()
+        },
+    )
+    .unwrap();
+    s.place(
+        Patch {
+            source: 0,
+            tx: 0,
+            ty: 0,
+        },
+        None,
+    )
+    .unwrap();
+    s.place(
+        Patch {
+            source: 0,
+            tx: 10,
+            ty: 4,
+        },
+        None,
+    )
+    .unwrap();
+    let region = s.error_region();
+    let candidates = s.candidates(region);
+    assert!(!candidates.is_empty());
+    let scored = s.score(region, &candidates).unwrap();
+    let w = s.canvas.width;
+    for c in scored.iter().step_by(7) {
+        let (mut sum, mut area) = (0.0f64, 0.0f64);
+        for i in s.footprint(c.patch) {
+            if s.canvas.label[i] == UNCOVERED {
+                continue;
+            }
+            let (sx, sy) = s
+                .canvas
+                .source_coords(c.patch, &s.sources[0], i % w, i / w)
+                .unwrap();
+            let a = s.canvas.pixels.pixel(i % w, i / w);
+            let b = s.sources[0].image.pixel(sx, sy);
+            sum += a
+                .iter()
+                .zip(b)
+                .map(|(x, y)| f64::from(x - y).powi(2))
+                .sum::<f64>();
+            area += 1.0;
+        }
+        let direct = (sum / area) as f32;
+        assert!(
+            (c.cost - direct).abs() < 1e-3 * direct.max(1e-3),
+            "fft {} vs direct {direct}",
+            c.cost
+        );
+    }
+}
+
+#[test]
+fn tileable_output_wraps_seams_and_blends_are_sound() {
+    let exemplar = sample("sand_64");
+    let options = Options {
+        output_width: 96,
+        output_height: 80,
+        tileable: true,
+        refinement_patches: 4,
+        ..Options::default()
+    };
+    let (session, _) = run(&exemplar, options.clone());
+    let s = session.synthesis();
+    assert!(s.canvas.is_covered());
+    assert_pixels_match_labels(s);
+    // Every wrap edge is costed like any other: the stored cost equals M of its two patches.
+    for y in 0..80 {
+        let (i, j) = (y * 96 + 95, y * 96);
+        let expected = match (s.patch_of(i), s.patch_of(j)) {
+            (Some(a), Some(b)) => s.seam_cost(i, j, true, a, b),
+            _ => 0.0,
+        };
+        assert!((s.canvas.h_seam[i] - expected).abs() < 1e-5);
+    }
+    for blend in [Blend::Feather, Blend::Spline] {
+        let (blended, _) = run(
+            &exemplar,
+            Options {
+                blend,
+                ..options.clone()
+            },
+        );
+        let out = blended.output().unwrap();
+        assert!(out.data().iter().all(|v| v.is_finite()));
+        let raw = &blended.synthesis().canvas.pixels;
+        let diff: f32 = out
+            .data()
+            .iter()
+            .zip(raw.data())
+            .map(|(a, b)| (a - b).abs())
+            .sum::<f32>()
+            / raw.data().len() as f32;
+        assert!(
+            diff > 0.0 && diff < 0.05,
+            "{blend:?} changes the image a little: {diff}"
+        );
+    }
+}
+
+#[test]
+fn a_single_patch_splines_to_itself_and_transforms_add_sources() {
+    let exemplar = noise(32, 32, 1, 8);
+    let options = Options {
+        output_width: 32,
+        output_height: 32,
+        blend: Blend::Spline,
+        ..Options::default()
+    };
+    let mut s = Synthesis::new(&exemplar, options).unwrap();
+    s.place(
+        Patch {
+            source: 0,
+            tx: 0,
+            ty: 0,
+        },
+        None,
+    )
+    .unwrap();
+    let splined = s.splined().unwrap();
+    assert!(
+        splined
+            .data()
+            .iter()
+            .zip(exemplar.data())
+            .all(|(a, b)| (a - b).abs() < 1e-4)
+    );
+    assert_eq!(s.feathered(), s.canvas.pixels);
+
+    let transforms = Transforms {
+        rotate: true,
+        mirror: true,
+        scales: [Some(0.75), None, None, None],
+        perspective: false,
+    };
+    let options = Options {
+        output_width: 64,
+        output_height: 64,
+        transforms,
+        refinement_patches: 2,
+        ..Options::default()
+    };
+    let (session, _) = run(&sample("ballast_64"), options);
+    assert_eq!(session.synthesis().sources.len(), 7);
+    assert_pixels_match_labels(session.synthesis());
+    let perspective = Transforms {
+        scales: [Some(0.5), Some(0.75), None, None],
+        perspective: true,
+        ..Transforms::default()
+    };
+    let options = Options {
+        output_width: 96,
+        output_height: 96,
+        transforms: perspective,
+        refinement_patches: 0,
+        ..Options::default()
+    };
+    let (session, _) = run(&sample("ballast_64"), options);
+    let s = session.synthesis();
+    // Scales grow from top to bottom: the mean scale of the top rows is below that of the bottom.
+    let mean_scale = |rows: std::ops::Range<usize>| {
+        let v: Vec<f32> = rows
+            .flat_map(|y| (0..96).map(move |x| y * 96 + x))
+            .map(|i| s.sources[s.patch_of(i).unwrap().source as usize].scale)
+            .collect();
+        v.iter().sum::<f32>() / v.len() as f32
+    };
+    assert!(
+        mean_scale(0..20) < mean_scale(76..96),
+        "{} vs {}",
+        mean_scale(0..20),
+        mean_scale(76..96)
+    );
+}
