@@ -8,3 +8,6 @@ mod exemplar_cases;
 
 #[path = "common/optimization_cases.rs"]
 mod optimization_cases;
+
+#[path = "common/graphcut_cases.rs"]
+mod graphcut_cases;

@@ -3,11 +3,15 @@
 
 mod error;
 mod exemplar;
+mod graphcut;
+mod merge;
 mod optimization;
 mod options;
 mod pixels;
 
 pub use exemplar::Exemplar;
+pub use graphcut::GraphcutTextures;
+pub use merge::GraphcutMerge;
 pub use optimization::TextureOptimization;
 
 use wasm_bindgen::prelude::*;

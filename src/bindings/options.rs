@@ -124,6 +124,29 @@ impl OptionsReader {
     }
 }
 
+impl OptionsReader {
+    /// An array of finite numbers.
+    pub fn numbers(&self, name: &'static str) -> JsResult<Option<Vec<f64>>> {
+        let Some(v) = self.get(name) else {
+            return Ok(None);
+        };
+        if !Array::is_array(&v) {
+            return Err(invalid(name, "must be an array of numbers"));
+        }
+        Array::from(&v)
+            .iter()
+            .map(|item| match item.as_f64() {
+                Some(n) if n.is_finite() => Ok(n),
+                _ => Err(invalid(
+                    name,
+                    format!("each entry must be a finite number, got {item:?}"),
+                )),
+            })
+            .collect::<JsResult<Vec<f64>>>()
+            .map(Some)
+    }
+}
+
 /// Builds a plain JS object from (key, value) pairs.
 pub fn object(entries: &[(&str, JsValue)]) -> JsValue {
     let obj = Object::new();

@@ -76,3 +76,18 @@ pub fn render_into(image: &Image, target: &Uint8ClampedArray) -> JsResult<()> {
     target.copy_from(&to_rgba8(image));
     Ok(())
 }
+
+/// Copies ready-made RGBA8 pixels into the caller's array, checking its length.
+pub fn write_rgba(rgba: &[u8], target: &Uint8ClampedArray) -> JsResult<()> {
+    let actual = target.length() as usize;
+    if actual != rgba.len() {
+        return Err(Error::LengthMismatch {
+            what: "target pixel array",
+            expected: rgba.len(),
+            actual,
+        }
+        .into());
+    }
+    target.copy_from(rgba);
+    Ok(())
+}

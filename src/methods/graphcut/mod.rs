@@ -6,12 +6,14 @@
 pub mod blend;
 pub mod canvas;
 pub mod cost;
+pub mod merge;
 pub mod options;
 pub mod placement;
 pub mod seam;
 pub mod session;
 pub mod source;
 pub mod synthesis;
+pub mod teaching;
 
 #[cfg(test)]
 mod tests;

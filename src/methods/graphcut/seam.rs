@@ -27,10 +27,16 @@ pub struct Placed {
 }
 
 impl Synthesis {
-    /// Places `patch` with the seam the graph cut chooses. `force_new` names an output pixel that
-    /// must take the new patch (used when the patch lies over a fully covered region, so that it
-    /// cannot be rejected entirely).
-    pub fn place(&mut self, patch: Patch, force_new: Option<usize>) -> Result<Placed> {
+    /// Places `patch` with the seam the graph cut chooses. `force_new` names output pixels that
+    /// must take the new patch (the centre of a fully covered region, so that a placement cannot
+    /// be rejected whole; or pixels a user painted for it when merging), `keep_old` pixels that
+    /// must keep what they show.
+    pub fn place(
+        &mut self,
+        patch: Patch,
+        force_new: &[usize],
+        keep_old: &[usize],
+    ) -> Result<Placed> {
         let footprint = self.footprint(patch);
         let (w, h) = (self.canvas.width, self.canvas.height);
         // Node of every output pixel under the patch.
@@ -55,7 +61,13 @@ impl Synthesis {
                 graph.add_terminal(n, HARD_CONSTRAINT, 0.0)?;
             }
         }
-        if let Some(i) = force_new.filter(|&i| node_of[i] != u32::MAX) {
+        for &i in keep_old
+            .iter()
+            .filter(|&&i| node_of[i] != u32::MAX && covered(i))
+        {
+            graph.add_terminal(node_of[i] as usize, HARD_CONSTRAINT, 0.0)?;
+        }
+        for &i in force_new.iter().filter(|&&i| node_of[i] != u32::MAX) {
             graph.add_terminal(node_of[i] as usize, 0.0, HARD_CONSTRAINT)?;
         }
         for (n, &s) in footprint.iter().enumerate() {

@@ -97,7 +97,8 @@ impl Session {
         // placement cannot be rejected whole (section 3.2).
         let centre = ((region.y + region.height / 2) % s.canvas.height) * s.canvas.width
             + (region.x + region.width / 2) % s.canvas.width;
-        let placed = s.place(patch, was_covered.then_some(centre))?;
+        let force: &[usize] = if was_covered { &[centre] } else { &[] };
+        let placed = s.place(patch, force, &[])?;
         let (pw, ph) = s.patch_extent(patch.source as usize);
         event.rect = (i64::from(patch.tx), i64::from(patch.ty), pw, ph);
         event.pixels_taken = placed.pixels_taken;

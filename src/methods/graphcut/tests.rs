@@ -63,7 +63,7 @@ fn the_cut_is_the_cheapest_labelling_including_old_seams() {
     };
     let mut s = Synthesis::new(&exemplar, options).unwrap();
     for (tx, ty) in [(0, 0), (8, 0), (0, 6), (9, 5), (5, 8), (14, 9), (10, 4)] {
-        s.place(Patch { source: 0, tx, ty }, None).unwrap();
+        s.place(Patch { source: 0, tx, ty }, &[], &[]).unwrap();
     }
     assert_pixels_match_labels(&s);
     let mut rng = Rng::new(4);
@@ -75,7 +75,7 @@ fn the_cut_is_the_cheapest_labelling_including_old_seams() {
         };
         let before = s.clone_state();
         let outside_before = seam_energy_outside(&s, patch);
-        let placed = s.place(patch, None).unwrap();
+        let placed = s.place(patch, &[], &[]).unwrap();
         assert_pixels_match_labels(&s);
         // The cut value is the seam energy inside the patch after placement (old seams kept,
         // new seams made), so the whole output's energy is the outside part plus the cut.
@@ -200,7 +200,7 @@ fn a_surrounded_region_keeps_its_border() {
         tx: 16,
         ty: 16,
     };
-    let placed = s.place(patch, Some(48 * 96 + 48)).unwrap();
+    let placed = s.place(patch, &[48 * 96 + 48], &[]).unwrap();
     assert!(placed.pixels_taken >= 1);
     assert_eq!(
         s.canvas.label[48 * 96 + 48] as usize,
@@ -306,7 +306,8 @@ fn matching_costs_equal_a_direct_area_normalised_ssd() {
             tx: 0,
             ty: 0,
         },
-        None,
+        &[],
+        &[],
     )
     .unwrap();
     s.place(
@@ -315,7 +316,8 @@ fn matching_costs_equal_a_direct_area_normalised_ssd() {
             tx: 10,
             ty: 4,
         },
-        None,
+        &[],
+        &[],
     )
     .unwrap();
     let region = s.error_region();
@@ -415,7 +417,8 @@ fn a_single_patch_splines_to_itself_and_transforms_add_sources() {
             tx: 0,
             ty: 0,
         },
-        None,
+        &[],
+        &[],
     )
     .unwrap();
     let splined = s.splined().unwrap();

@@ -1,0 +1,66 @@
+//! Native benchmark of graph-cut textures: `cargo run --release --example bench_graphcut`.
+//! Synthesises 256x256 from the samples with each placement mode and prints total time, time per
+//! placement (median, max), patches placed and the final total seam cost. `scripts/bench.sh` runs
+//! this and the same cases as wasm in Node. `BENCH_WRITE=dir` also writes the outputs as PNGs.
+
+use std::time::Instant;
+
+use texsynth::core::{decode, encode_png};
+use texsynth::methods::graphcut::{Options, Placement, Session};
+
+fn main() {
+    let samples = std::env::var("BENCH_SAMPLES").unwrap_or_else(|_| "gravel_128,gravel_64".into());
+    println!(
+        "native graph-cut textures, 256x256 output, default options (seed 1, 24 refinement patches)"
+    );
+    println!(
+        "{:<12} {:<13} {:>8} {:>9} {:>10} {:>10} {:>12}",
+        "exemplar", "placement", "patches", "total ms", "median ms", "max ms", "seam cost"
+    );
+    for name in samples.split(',') {
+        let path = format!("{}/www/samples/{name}.png", env!("CARGO_MANIFEST_DIR"));
+        let exemplar =
+            decode(&std::fs::read(&path).expect("sample exists")).expect("sample decodes");
+        for placement in [
+            Placement::Random,
+            Placement::EntirePatch,
+            Placement::SubPatch,
+        ] {
+            let start = Instant::now();
+            let mut session = Session::new(
+                &exemplar,
+                Options {
+                    placement,
+                    ..Options::default()
+                },
+            )
+            .expect("valid options");
+            let mut steps = Vec::new();
+            let event = loop {
+                let t = Instant::now();
+                let event = session.step().expect("step");
+                steps.push(t.elapsed().as_secs_f64() * 1e3);
+                if event.done {
+                    break event;
+                }
+            };
+            let total = start.elapsed().as_secs_f64() * 1e3;
+            steps.sort_by(f64::total_cmp);
+            let (median, max) = (steps[steps.len() / 2], steps[steps.len() - 1]);
+            if let Ok(dir) = std::env::var("BENCH_WRITE") {
+                let png = encode_png(&session.output().expect("output")).expect("png");
+                std::fs::write(
+                    format!("{dir}/{name}-graphcut-{}.png", placement.name()),
+                    png,
+                )
+                .expect("write");
+            }
+            println!(
+                "{name:<12} {:<13} {:>8} {total:>9.1} {median:>10.1} {max:>10.1} {:>12.1}",
+                placement.name(),
+                event.patches_placed,
+                event.total_seam_cost
+            );
+        }
+    }
+}

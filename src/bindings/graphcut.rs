@@ -1,0 +1,216 @@
+//! `GraphcutTextures`: the JS-visible graph-cut texture session. Each `step()` places one patch
+//! and returns a plain event object; the image and the teaching views render into the caller's
+//! buffers.
+
+use js_sys::Uint8ClampedArray;
+use wasm_bindgen::prelude::*;
+
+use super::error::JsResult;
+use super::exemplar::Exemplar;
+use super::options::{OptionsReader, object};
+use super::pixels::{render_into, write_rgba};
+use crate::core::Error;
+use crate::methods::graphcut::placement::Region;
+use crate::methods::graphcut::teaching::{label_map, seam_heat_map, seam_overlay};
+use crate::methods::graphcut::{Blend, Event, Options, Placement, Session, Transforms};
+
+const KNOWN: &[&str] = &[
+    "outputWidth",
+    "outputHeight",
+    "seed",
+    "placement",
+    "k",
+    "errorRegion",
+    "refinementPatches",
+    "gradientCost",
+    "blend",
+    "rotate",
+    "mirror",
+    "scales",
+    "perspective",
+    "tileable",
+];
+
+fn read_options(value: &JsValue) -> JsResult<Options> {
+    let js = OptionsReader::new(value, KNOWN)?;
+    let d = Options::default();
+    let placement = match js.string("placement")? {
+        None => d.placement,
+        Some(name) => Placement::from_name(&name).ok_or_else(|| Error::InvalidParameter {
+            name: "placement",
+            reason: format!("must be 'random', 'entire-patch' or 'sub-patch', got '{name}'"),
+        })?,
+    };
+    let blend = match js.string("blend")? {
+        None => d.blend,
+        Some(name) => Blend::from_name(&name).ok_or_else(|| Error::InvalidParameter {
+            name: "blend",
+            reason: format!("must be 'none', 'feather' or 'spline', got '{name}'"),
+        })?,
+    };
+    let mut scales = [None; 4];
+    if let Some(list) = js.numbers("scales")? {
+        if list.len() > 4 {
+            return Err(Error::InvalidParameter {
+                name: "scales",
+                reason: format!("at most 4 scales, got {}", list.len()),
+            }
+            .into());
+        }
+        for (slot, s) in scales.iter_mut().zip(list) {
+            *slot = Some(s as f32);
+        }
+    }
+    Ok(Options {
+        output_width: js
+            .integer("outputWidth", 1, 1 << 20)?
+            .map_or(d.output_width, |v| v as usize),
+        output_height: js
+            .integer("outputHeight", 1, 1 << 20)?
+            .map_or(d.output_height, |v| v as usize),
+        seed: js.integer("seed", 0, (1 << 53) - 1)?.unwrap_or(d.seed),
+        placement,
+        k: js.number("k")?.map_or(d.k, |v| v as f32),
+        error_region: js
+            .integer("errorRegion", 0, 1 << 20)?
+            .map_or(d.error_region, |v| v as usize),
+        refinement_patches: js
+            .integer("refinementPatches", 0, 1 << 20)?
+            .map_or(d.refinement_patches, |v| v as usize),
+        gradient_cost: js.boolean("gradientCost")?.unwrap_or(d.gradient_cost),
+        blend,
+        transforms: Transforms {
+            rotate: js.boolean("rotate")?.unwrap_or(false),
+            mirror: js.boolean("mirror")?.unwrap_or(false),
+            scales,
+            perspective: js.boolean("perspective")?.unwrap_or(false),
+        },
+        tileable: js.boolean("tileable")?.unwrap_or(d.tileable),
+    })
+}
+
+fn region_object(r: Region) -> JsValue {
+    object(&[
+        ("x", (r.x as u32).into()),
+        ("y", (r.y as u32).into()),
+        ("width", (r.width as u32).into()),
+        ("height", (r.height as u32).into()),
+    ])
+}
+
+fn event_object(e: &Event) -> JsValue {
+    let patch = e.patch.map_or(JsValue::NULL, |p| {
+        object(&[
+            ("source", p.source.into()),
+            ("offsetX", p.tx.into()),
+            ("offsetY", p.ty.into()),
+        ])
+    });
+    let (x, y, w, h) = e.rect;
+    object(&[
+        ("kind", if e.done { "done" } else { "placed" }.into()),
+        ("done", e.done.into()),
+        ("patch", patch),
+        (
+            "rect",
+            object(&[
+                ("x", (x as f64).into()),
+                ("y", (y as f64).into()),
+                ("width", (w as u32).into()),
+                ("height", (h as u32).into()),
+            ]),
+        ),
+        ("region", region_object(e.region)),
+        ("pixelsTaken", (e.pixels_taken as u32).into()),
+        ("cutCost", e.cut_cost.into()),
+        ("covered", e.covered.into()),
+        ("totalSeamCost", e.total_seam_cost.into()),
+        ("patchesPlaced", (e.patches_placed as u32).into()),
+    ])
+}
+
+/// A graph-cut texture synthesis (Kwatra et al. 2003) you advance with `step()`.
+#[wasm_bindgen]
+pub struct GraphcutTextures {
+    session: Session,
+}
+
+#[wasm_bindgen]
+impl GraphcutTextures {
+    /// Options (all optional): `outputWidth`, `outputHeight` (256), `seed` (1), `placement`
+    /// ('random' | 'entire-patch' | 'sub-patch'), `k` (0.01), `errorRegion` (0 = a third of the
+    /// exemplar), `refinementPatches` (24), `gradientCost` (false), `blend` ('none' | 'feather' |
+    /// 'spline'), `rotate`, `mirror` (false), `scales` ([]), `perspective` (false), `tileable`
+    /// (false). Unknown keys and impossible values throw.
+    #[wasm_bindgen(constructor)]
+    pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<GraphcutTextures> {
+        let options = read_options(&options)?;
+        Ok(GraphcutTextures {
+            session: Session::new(exemplar.image(), options)?,
+        })
+    }
+
+    /// Places one patch. Returns `{ kind: 'placed' | 'done', done, patch: { source, offsetX,
+    /// offsetY }, rect: { x, y, width, height }, region, pixelsTaken, cutCost, covered,
+    /// totalSeamCost, patchesPlaced }`.
+    pub fn step(&mut self) -> JsResult<JsValue> {
+        Ok(event_object(&self.session.step()?))
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn done(&self) -> bool {
+        self.session.is_done()
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn width(&self) -> u32 {
+        self.session.synthesis().canvas.width as u32
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn height(&self) -> u32 {
+        self.session.synthesis().canvas.height as u32
+    }
+
+    /// Writes the output (blended as the options say) into `target` (`width * height * 4`).
+    #[wasm_bindgen(js_name = renderInto)]
+    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        render_into(&self.session.output()?, target)
+    }
+
+    /// Seam pixels opaque red, the rest transparent (to draw over the image).
+    #[wasm_bindgen(js_name = renderSeams)]
+    pub fn render_seams(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        write_rgba(&seam_overlay(&self.session.synthesis().canvas), target)
+    }
+
+    /// The per-pixel seam cost as a heat map (black: none, white: the largest).
+    #[wasm_bindgen(js_name = renderSeamCost)]
+    pub fn render_seam_cost(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        write_rgba(&seam_heat_map(&self.session.synthesis().canvas), target)
+    }
+
+    /// The label map: every patch in its own colour.
+    #[wasm_bindgen(js_name = renderLabels)]
+    pub fn render_labels(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        write_rgba(&label_map(&self.session.synthesis().canvas), target)
+    }
+
+    /// The error region of the last placement, `{ x, y, width, height }`, or null.
+    #[wasm_bindgen(js_name = errorRegion)]
+    pub fn error_region(&self) -> JsValue {
+        self.session
+            .error_region()
+            .map_or(JsValue::NULL, region_object)
+    }
+
+    /// Names of the sources patches come from ("exemplar", "rotate 90", "scale 0.5", ...).
+    pub fn sources(&self) -> Vec<String> {
+        self.session
+            .synthesis()
+            .sources
+            .iter()
+            .map(|s| s.name.clone())
+            .collect()
+    }
+}

@@ -1,0 +1,253 @@
+//! Interactive merging (section 6.B): several source images placed by the user, some output
+//! pixels constrained by a brush to come from a particular source, and the seams between the
+//! sources found by the same graph cut that places texture patches. Each step lays the next
+//! source over the composite so far (one alpha-expansion move), so a page can show every seam
+//! appear.
+
+use super::canvas::{Canvas, Patch, UNCOVERED};
+use super::options::Options;
+use super::source::Source;
+use super::synthesis::Synthesis;
+use crate::core::{Error, Image, Result, Rng};
+use crate::solvers::fft_ssd::SsdSearch;
+
+/// A merge in progress.
+pub struct Merge {
+    synthesis: Synthesis,
+    offsets: Vec<(i32, i32)>,
+    /// Per output pixel: 0 = free, k = must come from source k - 1.
+    constraints: Vec<u8>,
+    next: usize,
+}
+
+impl Merge {
+    /// `sources` with their top-left positions in a `width` x `height` output, and the brush
+    /// constraints (one byte per output pixel: 0 free, k from source k - 1). Sources must share
+    /// a channel count (convert first).
+    pub fn new(
+        width: usize,
+        height: usize,
+        sources: Vec<(Image, i32, i32)>,
+        constraints: Vec<u8>,
+        gradient_cost: bool,
+    ) -> Result<Merge> {
+        if sources.is_empty() || sources.len() > 8 {
+            return Err(Error::InvalidParameter {
+                name: "sources",
+                reason: format!("give 1 to 8 sources, got {}", sources.len()),
+            });
+        }
+        if constraints.len() != width * height {
+            return Err(Error::LengthMismatch {
+                what: "constraint mask",
+                expected: width * height,
+                actual: constraints.len(),
+            });
+        }
+        if let Some(bad) = constraints.iter().find(|&&c| c as usize > sources.len()) {
+            return Err(Error::InvalidParameter {
+                name: "constraints",
+                reason: format!("value {bad} names no source (there are {})", sources.len()),
+            });
+        }
+        let channels = sources
+            .iter()
+            .map(|(img, _, _)| img.channels())
+            .max()
+            .expect("non-empty");
+        let options = Options {
+            output_width: width,
+            output_height: height,
+            gradient_cost,
+            ..Options::default()
+        };
+        let canvas = Canvas::new(width, height, channels, false)?;
+        let mut built = Vec::with_capacity(sources.len());
+        let mut offsets = Vec::with_capacity(sources.len());
+        for (k, (image, x, y)) in sources.into_iter().enumerate() {
+            let (w, h) = (i64::from(x), i64::from(y));
+            if w + image.width() as i64 <= 0
+                || h + image.height() as i64 <= 0
+                || w >= width as i64
+                || h >= height as i64
+            {
+                return Err(Error::InvalidParameter {
+                    name: "sources",
+                    reason: format!(
+                        "source {k} at ({x}, {y}) lies outside the {width}x{height} output"
+                    ),
+                });
+            }
+            built.push(Source::new(
+                image.with_channels(channels)?,
+                1.0,
+                format!("source {k}"),
+            ));
+            offsets.push((x, y));
+        }
+        let synthesis = Synthesis {
+            sigma: 1.0,
+            rng: Rng::new(0),
+            options,
+            sources: built,
+            canvas,
+            used: Default::default(),
+            ssd: SsdSearch::new(),
+        };
+        Ok(Merge {
+            synthesis,
+            offsets,
+            constraints,
+            next: 0,
+        })
+    }
+
+    #[must_use]
+    pub fn synthesis(&self) -> &Synthesis {
+        &self.synthesis
+    }
+
+    #[must_use]
+    pub fn is_done(&self) -> bool {
+        self.next >= self.offsets.len()
+    }
+
+    /// Lays the next source down; returns its index and the cut cost, or None when all are down.
+    pub fn step(&mut self) -> Result<Option<(usize, f64)>> {
+        if self.is_done() {
+            return Ok(None);
+        }
+        let k = self.next;
+        let (tx, ty) = self.offsets[k];
+        let patch = Patch {
+            source: k as u32,
+            tx,
+            ty,
+        };
+        let mut force_new = Vec::new();
+        let mut keep_old = Vec::new();
+        for (i, &c) in self.constraints.iter().enumerate() {
+            match c as usize {
+                0 => {}
+                c if c == k + 1 => force_new.push(i),
+                c if c <= k => keep_old.push(i),
+                _ => {} // a later source will take it
+            }
+        }
+        let placed = self.synthesis.place(patch, &force_new, &keep_old)?;
+        self.next += 1;
+        Ok(Some((k, placed.cut_cost)))
+    }
+
+    /// Which source each output pixel shows (-1 where none does).
+    #[must_use]
+    pub fn source_map(&self) -> Vec<i32> {
+        self.synthesis
+            .canvas
+            .label
+            .iter()
+            .map(|&l| {
+                if l == UNCOVERED {
+                    -1
+                } else {
+                    self.synthesis.canvas.patches[l as usize].source as i32
+                }
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn painted_pixels_come_from_their_source_and_the_seam_runs_between() {
+        // Two different images side by side with a wide overlap: paint the left edge for the
+        // first and the right edge for the second; the cut must honour both.
+        let a = Image::from_fn(
+            40,
+            30,
+            3,
+            |x, _, c| if c == 0 { 0.2 + x as f32 / 100.0 } else { 0.3 },
+        )
+        .unwrap();
+        let b = Image::from_fn(
+            40,
+            30,
+            3,
+            |_, y, c| if c == 1 { 0.2 + y as f32 / 100.0 } else { 0.6 },
+        )
+        .unwrap();
+        let (w, h) = (60, 30);
+        let mut constraints = vec![0u8; w * h];
+        for y in 0..h {
+            for x in 0..4 {
+                constraints[y * w + x] = 1;
+                constraints[y * w + w - 1 - x] = 2;
+            }
+            constraints[y * w + 25] = 1; // inside the overlap: must stay with the first source
+        }
+        let mut merge = Merge::new(
+            w,
+            h,
+            vec![(a, 0, 0), (b, 20, 0)],
+            constraints.clone(),
+            false,
+        )
+        .unwrap();
+        assert_eq!(merge.step().unwrap().map(|s| s.0), Some(0));
+        let (k, cut) = merge.step().unwrap().unwrap();
+        assert_eq!(k, 1);
+        assert!(cut > 0.0);
+        assert!(merge.is_done() && merge.step().unwrap().is_none());
+        let map = merge.source_map();
+        for (i, &c) in constraints.iter().enumerate() {
+            if c > 0 {
+                assert_eq!(map[i], i32::from(c) - 1, "pixel {i}");
+            }
+        }
+        assert!(
+            map.iter().all(|&s| s >= 0),
+            "the two sources cover the output"
+        );
+        // Every row switches from source 0 to source 1 somewhere in the overlap.
+        for y in 0..h {
+            let row = &map[y * w..(y + 1) * w];
+            assert!(row[..20].iter().all(|&s| s == 0) && row[40..].iter().all(|&s| s == 1));
+        }
+    }
+
+    #[test]
+    fn bad_merges_are_named_errors() {
+        let img = Image::new(10, 10, 1).unwrap();
+        assert!(
+            Merge::new(20, 20, vec![], vec![0; 400], false)
+                .err()
+                .unwrap()
+                .to_string()
+                .contains("sources")
+        );
+        assert!(
+            Merge::new(20, 20, vec![(img.clone(), 0, 0)], vec![0; 10], false)
+                .err()
+                .unwrap()
+                .to_string()
+                .contains("constraint mask")
+        );
+        assert!(
+            Merge::new(20, 20, vec![(img.clone(), 0, 0)], vec![3; 400], false)
+                .err()
+                .unwrap()
+                .to_string()
+                .contains("names no source")
+        );
+        assert!(
+            Merge::new(20, 20, vec![(img, 30, 0)], vec![0; 400], false)
+                .err()
+                .unwrap()
+                .to_string()
+                .contains("outside")
+        );
+    }
+}

@@ -1,0 +1,127 @@
+//! The JS-facing graph-cut sessions, as JavaScript calls them (Node and Chromium).
+
+use js_sys::{Object, Reflect, Uint8ClampedArray};
+use texsynth::bindings::{Exemplar, GraphcutMerge, GraphcutTextures};
+use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen_test::wasm_bindgen_test;
+
+const TILES_64: &[u8] = include_bytes!("../../www/samples/tiles_64.png");
+const SAND_64: &[u8] = include_bytes!("../../www/samples/sand_64.png");
+
+fn options(entries: &[(&str, JsValue)]) -> JsValue {
+    let obj = Object::new();
+    for (k, v) in entries {
+        Reflect::set(&obj, &(*k).into(), v).unwrap();
+    }
+    obj.into()
+}
+
+fn get(value: &JsValue, key: &str) -> JsValue {
+    Reflect::get(value, &key.into()).unwrap()
+}
+
+fn error_message<T>(result: Result<T, wasm_bindgen::JsError>) -> String {
+    let Err(err) = result else {
+        panic!("expected an error")
+    };
+    let value: JsValue = err.into();
+    String::from(
+        value
+            .dyn_ref::<js_sys::Error>()
+            .expect("a JS Error")
+            .message(),
+    )
+}
+
+#[wasm_bindgen_test]
+fn a_graphcut_session_places_patches_until_done() {
+    let ex = Exemplar::from_bytes(TILES_64).unwrap();
+    let opts = options(&[
+        ("outputWidth", 96.into()),
+        ("outputHeight", 80.into()),
+        ("refinementPatches", 3.into()),
+        ("blend", "feather".into()),
+    ]);
+    let mut session = GraphcutTextures::new(&ex, opts).unwrap();
+    assert_eq!((session.width(), session.height()), (96, 80));
+    assert!(session.error_region().is_null());
+    let first = session.step().unwrap();
+    assert_eq!(get(&first, "kind").as_string().unwrap(), "placed");
+    assert!(get(&first, "pixelsTaken").as_f64().unwrap() > 0.0);
+    let mut steps = 1;
+    let mut last = first;
+    while !session.done() {
+        last = session.step().unwrap();
+        steps += 1;
+        assert!(steps < 200);
+    }
+    assert_eq!(get(&last, "kind").as_string().unwrap(), "done");
+    assert!(get(&last, "covered").as_bool().unwrap());
+    assert!(get(&last, "totalSeamCost").as_f64().unwrap() > 0.0);
+    let target = Uint8ClampedArray::new_with_length(96 * 80 * 4);
+    session.render_into(&target).unwrap();
+    assert!(target.to_vec().chunks(4).all(|p| p[3] == 255));
+    session.render_seams(&target).unwrap();
+    assert!(target.to_vec().chunks(4).any(|p| p[3] == 255), "some seams");
+    session.render_seam_cost(&target).unwrap();
+    session.render_labels(&target).unwrap();
+    assert!(!get(&session.error_region(), "width").is_undefined());
+    assert_eq!(session.sources(), vec!["exemplar".to_string()]);
+}
+
+#[wasm_bindgen_test]
+fn graphcut_options_are_checked_by_name() {
+    let ex = Exemplar::from_bytes(TILES_64).unwrap();
+    let msg =
+        |entries: &[(&str, JsValue)]| error_message(GraphcutTextures::new(&ex, options(entries)));
+    assert!(msg(&[("placment", "random".into())]).contains("unknown option 'placment'"));
+    assert!(msg(&[("placement", "best".into())]).contains("invalid placement"));
+    assert!(msg(&[("k", 0.into())]).contains("invalid k"));
+    assert!(msg(&[("k", f64::NAN.into())]).contains("invalid k"));
+    assert!(msg(&[("blend", 3.into())]).contains("invalid blend"));
+    assert!(msg(&[("scales", "big".into())]).contains("invalid scales"));
+    assert!(msg(&[("scales", js_sys::Array::of1(&0.01.into()).into())]).contains("scales"));
+    assert!(msg(&[("errorRegion", 500.into())]).contains("errorRegion"));
+    let target = Uint8ClampedArray::new_with_length(3);
+    let session = GraphcutTextures::new(&ex, JsValue::UNDEFINED).unwrap();
+    assert!(error_message(session.render_labels(&target)).contains("target pixel array"));
+}
+
+#[wasm_bindgen_test]
+fn a_merge_honours_painted_constraints() {
+    let tiles = Exemplar::from_bytes(TILES_64).unwrap();
+    let sand = Exemplar::from_bytes(SAND_64).unwrap();
+    let (w, h) = (100usize, 64usize);
+    let mut merge = GraphcutMerge::new(w as u32, h as u32, Some(true)).unwrap();
+    assert_eq!(merge.add_source(&tiles, 0, 0).unwrap(), 0);
+    assert_eq!(merge.add_source(&sand, 36, 0).unwrap(), 1);
+    let mut mask = vec![0u8; w * h];
+    for y in 0..h {
+        mask[y * w + 40] = 1; // inside the overlap, but painted for the tiles
+        mask[y * w + 62] = 2; // painted for the sand
+    }
+    merge.set_constraints(&mask).unwrap();
+    while !merge.done() {
+        merge.step().unwrap();
+    }
+    let target = Uint8ClampedArray::new_with_length((w * h * 4) as u32);
+    merge.render_sources(&target).unwrap();
+    let colours = target.to_vec();
+    let colour = |x: usize, y: usize| colours[(y * w + x) * 4..(y * w + x) * 4 + 3].to_vec();
+    for y in 0..h {
+        assert_eq!(
+            colour(40, y),
+            colour(0, y),
+            "row {y}: painted pixel keeps the first source"
+        );
+        assert_eq!(
+            colour(62, y),
+            colour(99, y),
+            "row {y}: painted pixel takes the second source"
+        );
+    }
+    merge.render_into(&target).unwrap();
+    merge.render_seams(&target).unwrap();
+    assert!(error_message(merge.set_constraints(&[0; 5])).contains("constraint mask"));
+    assert!(error_message(GraphcutMerge::new(0, 5, None)).contains("output size 0x5"));
+}
