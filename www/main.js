@@ -5,9 +5,11 @@ import init, { version } from './pkg/texsynth.js';
 import { drawInto } from './lib/canvas.js';
 import { setupInput } from './lib/input.js';
 import { Runner } from './lib/runner.js';
+import * as graphcut from './panels/graphcut.js';
+import * as merge from './panels/merge.js';
 import * as optimization from './panels/optimization.js';
 
-const PANELS = [optimization];
+const PANELS = [optimization, graphcut, merge];
 const $ = (id) => document.getElementById(id);
 
 function showError(message) {
@@ -48,6 +50,7 @@ function resetPanel() {
 
 function selectPanel(module) {
   resetPanel();
+  state.panel?.unmount?.();
   state.panel = module.createPanel(ui);
   $('method-options').innerHTML = state.panel.optionsHtml;
   $('side').innerHTML = state.panel.sideHtml;
@@ -56,7 +59,7 @@ function selectPanel(module) {
   }
   state.panel.mount();
   for (const input of $('method-options').querySelectorAll('input, select')) {
-    if (input.id !== 'to-teaching') input.addEventListener('change', resetPanel);
+    if (!input.classList.contains('view')) input.addEventListener('change', resetPanel);
   }
   state.runner = new Runner({
     step: () => state.panel.step(),

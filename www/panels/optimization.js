@@ -18,7 +18,7 @@ const OPTIONS_HTML = `
   <label title="weight of the gradient energy; 0 is off, the paper uses 10">μ <input id="to-mu" type="number" value="0" min="0" max="100" step="1"></label>
   <label title="EM iterations per level at most">iterations <input id="to-iterations" type="number" value="5" min="1" max="20" step="1"></label>
   <label><input id="to-tileable" type="checkbox"> tileable</label>
-  <label><input id="to-teaching" type="checkbox"> teaching view</label>`;
+  <label><input id="to-teaching" class="view" type="checkbox"> teaching view</label>`;
 
 const SIDE_HTML = `
   <div class="readout" id="to-readout">press Run or Step</div>

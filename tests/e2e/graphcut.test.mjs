@@ -1,0 +1,77 @@
+// The "Graphcut textures" and "Graph-cut merge" panels in headless Chromium: placements are drawn,
+// the run reaches done, the seam overlay toggles, and a merge with painted constraints completes.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { openDemo, RESULTS } from './harness.mjs';
+
+let demo;
+before(async () => {
+  demo = await openDemo();
+});
+after(async () => demo?.close());
+
+const canvasPixels = (page) =>
+  page.evaluate(() => {
+    const c = document.getElementById('output-canvas');
+    return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
+  });
+
+const redPixels = (pixels) => {
+  let n = 0;
+  for (let i = 0; i < pixels.length; i += 4) if (pixels[i] === 255 && pixels[i + 1] === 40 && pixels[i + 2] === 40) n++;
+  return n;
+};
+
+test('the graph-cut panel places patches live and runs to done', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-panel="graphcut"]');
+  await page.click('button[data-sample="tiles_64"]');
+  await page.waitForSelector('body[data-exemplar="tiles 64×64"]');
+  await page.fill('#out-width', '160');
+  await page.fill('#out-height', '128');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.fill('#gc-refine', '6');
+  await page.dispatchEvent('#gc-refine', 'change');
+  await page.click('#step');
+  await page.waitForSelector('body[data-patches="1"]');
+  const first = await canvasPixels(page);
+  await page.click('#step');
+  await page.waitForSelector('body[data-patches="2"]');
+  assert.notDeepEqual(first, await canvasPixels(page), 'the second patch changes the canvas');
+  await page.click('#run');
+  await page.waitForSelector('body[data-graphcut-done="true"]', { timeout: 60_000 });
+  assert.match(await page.textContent('#gc-readout'), /patches · .* · covered/);
+  const withSeams = await canvasPixels(page);
+  assert.ok(redPixels(withSeams) > 50, 'the seam overlay is drawn');
+  await page.screenshot({ path: `${RESULTS}/graphcut.png`, fullPage: true });
+  await page.uncheck('#gc-seams');
+  assert.equal(redPixels(await canvasPixels(page)), 0, 'the seam overlay toggles off');
+  await page.check('#gc-labels');
+  await page.screenshot({ path: `${RESULTS}/graphcut-labels.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});
+
+test('a merge with painted constraints completes and shows its seam', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-panel="merge"]');
+  await page.click('button[data-sample="tiles_128"]');
+  await page.waitForSelector('body[data-exemplar="tiles 128×128"]');
+  const box = await page.locator('#output-canvas').boundingBox();
+  // Paint a vertical stroke for the first image, then one for the second.
+  const stroke = async (fraction) => {
+    await page.mouse.move(box.x + box.width * fraction, box.y + 5);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width * fraction, box.y + box.height - 5, { steps: 12 });
+    await page.mouse.up();
+  };
+  await page.check('input[name="mg-brush"][value="1"]');
+  await stroke(0.45);
+  await page.check('input[name="mg-brush"][value="2"]');
+  await stroke(0.75);
+  await page.click('#run');
+  await page.waitForSelector('body[data-merge-done="true"]', { timeout: 30_000 });
+  assert.match(await page.textContent('#mg-readout'), /merged · cut cost/);
+  assert.ok(redPixels(await canvasPixels(page)) > 20, 'the seam is drawn');
+  await page.screenshot({ path: `${RESULTS}/merge.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});

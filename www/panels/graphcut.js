@@ -1,0 +1,114 @@
+// The "Graphcut textures" panel (Kwatra et al. 2003): every patch placement is drawn as it happens,
+// with the new patch's outline, the error region, and toggles for the seams, the seam-cost heat
+// map and the label map; the total seam cost is plotted against the number of patches.
+import { GraphcutTextures } from '../pkg/texsynth.js';
+import { drawInto, drawOverlay, strokeRect } from '../lib/canvas.js';
+import { drawLinePlot } from '../lib/plot.js';
+
+export const id = 'graphcut';
+export const title = 'Graphcut textures';
+
+const OPTIONS_HTML = `
+  <label>Placement <select id="gc-placement">
+    <option value="entire-patch">entire patch matching</option>
+    <option value="sub-patch">sub-patch matching</option>
+    <option value="random">random</option>
+  </select></label>
+  <label title="randomness of the offset choice, exp(-C / (k σ²)); the paper uses 0.001 to 1">k <input id="gc-k" type="number" value="0.01" min="0.001" max="1" step="0.001"></label>
+  <label title="patches placed after the output is covered">refine <input id="gc-refine" type="number" value="24" min="0" max="500" step="1"></label>
+  <label>Blend <select id="gc-blend">
+    <option value="none">none</option><option value="feather">feather</option><option value="spline">multi-resolution spline</option>
+  </select></label>
+  <label><input id="gc-gradient" type="checkbox"> gradient cost M′</label>
+  <label><input id="gc-rotate" type="checkbox"> rotations</label>
+  <label><input id="gc-mirror" type="checkbox"> mirrors</label>
+  <label><input id="gc-tileable" type="checkbox"> tileable</label>
+  <span class="views">show:
+    <label><input id="gc-seams" class="view" type="checkbox" checked> seams</label>
+    <label><input id="gc-heat" class="view" type="checkbox"> seam cost</label>
+    <label><input id="gc-labels" class="view" type="checkbox"> labels</label>
+  </span>`;
+
+const SIDE_HTML = `
+  <div class="readout" id="gc-readout">press Run or Step</div>
+  <canvas id="gc-plot" class="plot" width="296" height="170" aria-label="Seam cost plot"></canvas>
+  <p class="legend">Outline: the patch just placed (orange) and the error region it had to cover (dashed).</p>`;
+
+export function createPanel(ui) {
+  let session = null;
+  let lastEvent = null;
+  let costs = [];
+
+  function options() {
+    return {
+      outputWidth: ui.outputWidth(),
+      outputHeight: ui.outputHeight(),
+      seed: ui.seed(),
+      placement: ui.$('gc-placement').value,
+      k: Number(ui.$('gc-k').value),
+      refinementPatches: Number(ui.$('gc-refine').value),
+      blend: ui.$('gc-blend').value,
+      gradientCost: ui.$('gc-gradient').checked,
+      rotate: ui.$('gc-rotate').checked,
+      mirror: ui.$('gc-mirror').checked,
+      tileable: ui.$('gc-tileable').checked,
+    };
+  }
+
+  function draw() {
+    if (!session) return;
+    const canvas = ui.outputCanvas;
+    const { width, height } = session;
+    if (ui.$('gc-labels').checked) {
+      canvas.width = width;
+      canvas.height = height;
+      canvas.getContext('2d').clearRect(0, 0, width, height);
+      drawOverlay(canvas, width, height, (b) => session.renderLabels(b));
+    } else {
+      drawInto(canvas, session);
+    }
+    if (ui.$('gc-heat').checked) drawOverlay(canvas, width, height, (b) => session.renderSeamCost(b), 0.85);
+    if (ui.$('gc-seams').checked) drawOverlay(canvas, width, height, (b) => session.renderSeams(b));
+    if (lastEvent?.patch && !lastEvent.done) {
+      strokeRect(canvas, lastEvent.rect, width, height, '#e0a458');
+      strokeRect(canvas, lastEvent.region, width, height, '#7fd1ff', [3, 2]);
+    }
+  }
+
+  return {
+    id,
+    title,
+    optionsHtml: OPTIONS_HTML,
+    sideHtml: SIDE_HTML,
+    mount() {
+      for (const id of ['gc-seams', 'gc-heat', 'gc-labels']) ui.$(id).addEventListener('change', draw);
+    },
+    step() {
+      session ??= new GraphcutTextures(ui.exemplar(), options());
+      return session.done ? null : session.step();
+    },
+    onStep(event) {
+      lastEvent = event;
+      costs.push(event.totalSeamCost);
+      draw();
+      drawLinePlot(ui.$('gc-plot'), costs, { title: 'total seam cost per patch' });
+      const where = event.patch ? `offset (${event.patch.offsetX}, ${event.patch.offsetY})` : 'no unused offset left';
+      ui.$('gc-readout').textContent =
+        `${event.patchesPlaced} patches · ${where} · took ${event.pixelsTaken} px · cut ${event.cutCost.toFixed(2)} · ` +
+        `total seam cost ${event.totalSeamCost.toFixed(1)} · ${event.covered ? 'covered' : 'covering…'}`;
+      document.body.dataset.patches = String(event.patchesPlaced);
+      if (event.done) document.body.dataset.graphcutDone = 'true';
+    },
+    reset() {
+      session?.free();
+      session = null;
+      lastEvent = null;
+      costs = [];
+      delete document.body.dataset.graphcutDone;
+      document.body.dataset.patches = '0';
+      ui.$('gc-readout').textContent = 'press Run or Step';
+      drawLinePlot(ui.$('gc-plot'), [], { title: 'total seam cost per patch' });
+      ui.outputCanvas.getContext('2d').clearRect(0, 0, ui.outputCanvas.width, ui.outputCanvas.height);
+    },
+  };
+}

@@ -1,0 +1,153 @@
+// The "Graph-cut merge" panel (Kwatra et al. 2003, section 6.B): the exemplar and a second image
+// overlap; paint which pixels must come from which image, then watch the graph cut lay the
+// second image over the first along the cheapest seam that honours the paint.
+import { Exemplar, GraphcutMerge } from '../pkg/texsynth.js';
+import { drawInto, drawOverlay } from '../lib/canvas.js';
+import { SAMPLES } from '../lib/samples.js';
+
+export const id = 'merge';
+export const title = 'Graph-cut merge';
+
+const PAINT = [null, [80, 170, 255, 150], [255, 120, 60, 150]];
+
+export function createPanel(ui) {
+  let merge = null;
+  let second = null;
+  let mask = null;
+  let layout = null;
+  let painting = false;
+
+  function optionsHtml() {
+    const choices = SAMPLES.map((s) => `<option value="${s.url}" ${s.id === 'sand_128' ? 'selected' : ''}>${s.label}</option>`).join('');
+    return `
+      <label>Second image <select id="mg-second">${choices}</select></label>
+      <label title="horizontal position of the second image">offset x <input id="mg-offset" type="number" value="64" min="0" max="512" step="1"></label>
+      <span class="views">brush:
+        <label><input type="radio" name="mg-brush" class="view" value="1" checked> first</label>
+        <label><input type="radio" name="mg-brush" class="view" value="2"> second</label>
+        <label><input type="radio" name="mg-brush" class="view" value="0"> erase</label>
+        <label>size <input id="mg-size" class="view" type="number" value="6" min="1" max="40" step="1"></label>
+      </span>
+      <button id="mg-clear" type="button">Clear paint</button>`;
+  }
+
+  async function loadSecond() {
+    const bytes = new Uint8Array(await (await fetch(ui.$('mg-second').value)).arrayBuffer());
+    second?.free();
+    second = Exemplar.fromBytes(bytes);
+  }
+
+  function computeLayout() {
+    const first = ui.exemplar();
+    const offset = Math.max(0, Math.round(Number(ui.$('mg-offset').value)) || 0);
+    const width = Math.max(first.width, offset + second.width);
+    const height = Math.max(first.height, second.height);
+    if (!layout || layout.width !== width || layout.height !== height || layout.offset !== offset) {
+      layout = { width, height, offset };
+      mask = new Uint8Array(width * height);
+    }
+  }
+
+  function build() {
+    computeLayout();
+    merge?.free();
+    merge = new GraphcutMerge(layout.width, layout.height, true);
+    merge.addSource(ui.exemplar(), 0, 0);
+    merge.addSource(second, layout.offset, 0);
+    merge.setConstraints(mask);
+  }
+
+  function draw() {
+    const canvas = ui.outputCanvas;
+    if (!layout) return;
+    canvas.width = layout.width;
+    canvas.height = layout.height;
+    const ctx = canvas.getContext('2d');
+    ctx.clearRect(0, 0, layout.width, layout.height);
+    if (merge && merge.done) {
+      drawInto(canvas, merge);
+      drawOverlay(canvas, layout.width, layout.height, (b) => merge.renderSeams(b));
+    } else {
+      // Preview: both sources where they are placed, the second half-transparent.
+      for (const [source, x, alpha] of [[ui.exemplar(), 0, 1], [second, layout.offset, 0.55]]) {
+        const layer = document.createElement('canvas');
+        drawInto(layer, source);
+        ctx.globalAlpha = alpha;
+        ctx.drawImage(layer, x, 0);
+        ctx.globalAlpha = 1;
+      }
+    }
+    drawOverlay(canvas, layout.width, layout.height, (buffer) => {
+      mask.forEach((m, i) => PAINT[m] && buffer.set(PAINT[m], i * 4));
+    });
+  }
+
+  function paintAt(event) {
+    const canvas = ui.outputCanvas;
+    const box = canvas.getBoundingClientRect();
+    const x = Math.floor(((event.clientX - box.left) / box.width) * layout.width);
+    const y = Math.floor(((event.clientY - box.top) / box.height) * layout.height);
+    const value = Number(document.querySelector('input[name="mg-brush"]:checked').value);
+    const r = Number(ui.$('mg-size').value) || 6;
+    for (let dy = -r; dy <= r; dy++) {
+      for (let dx = -r; dx <= r; dx++) {
+        const px = x + dx;
+        const py = y + dy;
+        if (dx * dx + dy * dy > r * r || px < 0 || py < 0 || px >= layout.width || py >= layout.height) continue;
+        mask[py * layout.width + px] = value;
+      }
+    }
+    // New paint means a new merge: the old result no longer honours it.
+    merge?.free();
+    merge = null;
+    delete document.body.dataset.mergeDone;
+    draw();
+  }
+
+  return {
+    id,
+    title,
+    get optionsHtml() {
+      return optionsHtml();
+    },
+    sideHtml: `<div class="readout" id="mg-readout">paint on the image, then Run or Step</div>
+      <p class="legend">Blue paint: must come from the first image (the exemplar). Orange: from the second.
+      Red lines: the seam the graph cut chose.</p>`,
+    mount() {
+      const canvas = ui.outputCanvas;
+      canvas.onpointerdown = (e) => { painting = true; paintAt(e); };
+      canvas.onpointermove = (e) => painting && paintAt(e);
+      window.addEventListener('pointerup', () => { painting = false; });
+      ui.$('mg-clear').addEventListener('click', () => { mask?.fill(0); merge?.free(); merge = null; draw(); });
+      ui.$('mg-second').addEventListener('change', async () => { await loadSecond(); layout = null; this.reset(); });
+      loadSecond().then(() => this.reset());
+    },
+    unmount() {
+      const canvas = ui.outputCanvas;
+      canvas.onpointerdown = canvas.onpointermove = null;
+    },
+    step() {
+      if (!second) return null;
+      if (!merge) build();
+      return merge.done ? null : merge.step();
+    },
+    onStep(event) {
+      draw();
+      ui.$('mg-readout').textContent = event.done
+        ? `merged · cut cost ${event.cutCost.toFixed(2)}`
+        : `source ${event.source + 1} laid down`;
+      if (event.done) document.body.dataset.mergeDone = 'true';
+    },
+    reset() {
+      merge?.free();
+      merge = null;
+      delete document.body.dataset.mergeDone;
+      if (second && ui.exemplar()) {
+        computeLayout();
+        draw();
+      }
+      const readout = ui.$('mg-readout');
+      if (readout) readout.textContent = 'paint on the image, then Run or Step';
+    },
+  };
+}
