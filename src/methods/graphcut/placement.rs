@@ -167,12 +167,14 @@ impl Synthesis {
             }
             let (pw, ph) = self.patch_extent(s);
             let patch_image = self.sources[s].image.crop(0, 0, pw, ph)?;
-            let map = self.ssd.search(
+            // Keyed by source: its transforms are computed once per synthesis, not per placement.
+            let map = self.ssd.search_keyed(
                 &self.canvas.pixels,
                 Some(&weights),
                 &patch_image,
                 None,
                 boundary,
+                Some(s as u64),
             )?;
             for patch in of_source {
                 let (cost, area) = map
@@ -236,26 +238,49 @@ pub fn region_contains(region: Region, x: usize, y: usize, w: usize, h: usize, w
 }
 
 /// Sum of `values` over every `side` x `side` window, indexed by the window's top-left corner.
-/// Windows that would cross the border get -inf (or wrap around when `wrap`).
+/// Windows that would cross the border get -inf (or wrap around when `wrap`). Running sums along
+/// rows then columns: O(w h) whatever the side.
 #[must_use]
 pub fn box_sums(values: &[f32], w: usize, h: usize, side: usize, wrap: bool) -> Vec<f32> {
-    let mut rows = vec![f32::NEG_INFINITY; w * h];
-    for y in 0..h {
-        for x in 0..w {
-            if wrap || x + side <= w {
-                rows[y * w + x] = (0..side).map(|d| values[y * w + (x + d) % w]).sum();
+    let rows = sliding_sums(values, w, h, side, wrap, true);
+    sliding_sums(&rows, w, h, side, wrap, false)
+}
+
+/// Window sums of length `side` along rows (`along_rows`) or columns, in f64 so that the running
+/// sum does not drift.
+fn sliding_sums(
+    values: &[f32],
+    w: usize,
+    h: usize,
+    side: usize,
+    wrap: bool,
+    along_rows: bool,
+) -> Vec<f32> {
+    let (len, lines) = if along_rows { (w, h) } else { (h, w) };
+    let at = |line: usize, k: usize| {
+        if along_rows {
+            line * w + k
+        } else {
+            k * w + line
+        }
+    };
+    let mut out = vec![f32::NEG_INFINITY; w * h];
+    for line in 0..lines {
+        if values[at(line, 0)] == f32::NEG_INFINITY {
+            continue; // a column of windows that already cross the right border
+        }
+        let mut sum: f64 = (0..side)
+            .map(|k| f64::from(values[at(line, k % len)]))
+            .sum();
+        for start in 0..len {
+            if wrap || start + side <= len {
+                out[at(line, start)] = sum as f32;
             }
+            sum += f64::from(values[at(line, (start + side) % len)])
+                - f64::from(values[at(line, start)]);
         }
     }
-    let mut sums = vec![f32::NEG_INFINITY; w * h];
-    for y in 0..h {
-        for x in 0..w {
-            if wrap || y + side <= h {
-                sums[y * w + x] = (0..side).map(|d| rows[((y + d) % h) * w + x]).sum();
-            }
-        }
-    }
-    sums
+    out
 }
 
 #[cfg(test)]
@@ -268,6 +293,16 @@ mod tests {
         let sums = box_sums(&values, 6, 5, 2, false);
         assert_eq!(sums[0], values[0] + values[1] + values[6] + values[7]);
         assert_eq!(sums[5], f32::NEG_INFINITY);
+        assert!(sums.iter().all(|v| !v.is_nan()));
+        for y in 0..4 {
+            for x in 0..5 {
+                let direct: f32 = (0..2)
+                    .flat_map(|dy| (0..2).map(move |dx| (dx, dy)))
+                    .map(|(dx, dy)| values[(y + dy) * 6 + x + dx])
+                    .sum();
+                assert!((sums[y * 6 + x] - direct).abs() < 1e-4);
+            }
+        }
         let wrapped = box_sums(&values, 6, 5, 2, true);
         assert_eq!(wrapped[29], values[29] + values[24] + values[5] + values[0]);
     }

@@ -105,7 +105,7 @@ impl Synthesis {
         self.canvas.patches.push(patch);
         self.used.insert(patch);
         let source = &self.sources[patch.source as usize];
-        let mut pixels_taken = 0;
+        let mut taken = Vec::new();
         for (n, &i) in footprint.iter().enumerate() {
             if graph.is_source_side(n) {
                 continue;
@@ -123,13 +123,14 @@ impl Synthesis {
                 self.canvas.covered += 1;
             }
             self.canvas.label[i] = index as u32;
-            pixels_taken += 1;
+            taken.push(i);
         }
-        self.update_seams(&footprint);
+        // Only edges touching a pixel that changed can have a different seam now.
+        self.update_seams(&taken);
         Ok(Placed {
             index,
             patch,
-            pixels_taken,
+            pixels_taken: taken.len(),
             cut_cost,
         })
     }
