@@ -3,6 +3,9 @@
 
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
+#[path = "common/js_helpers.rs"]
+mod js_helpers;
+
 #[path = "common/exemplar_cases.rs"]
 mod exemplar_cases;
 

@@ -1,6 +1,9 @@
 //! The JS-facing API in Node (`cargo test --target wasm32-unknown-unknown --tests`).
 #![cfg(target_arch = "wasm32")]
 
+#[path = "common/js_helpers.rs"]
+mod js_helpers;
+
 #[path = "common/exemplar_cases.rs"]
 mod exemplar_cases;
 

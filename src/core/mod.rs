@@ -8,6 +8,8 @@ pub mod image;
 pub mod pyramid;
 pub mod rng;
 pub mod sample;
+#[cfg(test)]
+pub mod testing;
 
 pub use codec::{decode, encode_png, from_rgba8, to_rgba8, write_rgba8};
 pub use error::{Error, Result};

@@ -3,21 +3,13 @@
 
 use js_sys::{Object, Reflect, Uint8Array, Uint8ClampedArray};
 use texsynth::bindings::{Exemplar, version};
-use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
+
+use super::js_helpers::error_message;
 
 const BRICK_64: &[u8] = include_bytes!("../../www/samples/brick_64.png");
 const TILES_128: &[u8] = include_bytes!("../../www/samples/tiles_128.png");
-
-/// The message of the JS `Error` a failed call produced.
-fn message_of<T>(result: Result<T, wasm_bindgen::JsError>) -> String {
-    let Err(err) = result else {
-        panic!("expected an error")
-    };
-    let value: JsValue = err.into();
-    let error: &js_sys::Error = value.dyn_ref().expect("a JS Error object");
-    String::from(error.message())
-}
 
 #[wasm_bindgen_test]
 fn version_is_the_crate_version() {
@@ -61,27 +53,27 @@ fn image_data_shaped_objects_are_accepted() {
 
 #[wasm_bindgen_test]
 fn bad_input_is_a_js_error_with_a_message() {
-    assert!(message_of(Exemplar::from_bytes(&[])).contains("empty input"));
-    assert!(message_of(Exemplar::from_bytes(b"GIF89a not really")).contains("could not decode"));
+    assert!(error_message(Exemplar::from_bytes(&[])).contains("empty input"));
+    assert!(error_message(Exemplar::from_bytes(b"GIF89a not really")).contains("could not decode"));
     let truncated = &TILES_128[..TILES_128.len() / 3];
-    assert!(message_of(Exemplar::from_bytes(truncated)).contains("could not decode"));
-    let msg = message_of(Exemplar::from_rgba(&[], 0, 0));
+    assert!(error_message(Exemplar::from_bytes(truncated)).contains("could not decode"));
+    let msg = error_message(Exemplar::from_rgba(&[], 0, 0));
     assert!(msg.contains("0x0"), "{msg}");
-    let msg = message_of(Exemplar::from_rgba(&[0; 16], 100_000, 100_000));
+    let msg = error_message(Exemplar::from_rgba(&[0; 16], 100_000, 100_000));
     assert!(msg.contains("100000x100000"), "{msg}");
-    let msg = message_of(Exemplar::from_rgba(&[0; 15], 2, 2));
+    let msg = error_message(Exemplar::from_rgba(&[0; 15], 2, 2));
     assert!(
         msg.contains("length 15") && msg.contains("expected 16"),
         "{msg}"
     );
-    let msg = message_of(Exemplar::from_image_data(&JsValue::from(3)));
+    let msg = error_message(Exemplar::from_image_data(&JsValue::from(3)));
     assert!(msg.contains("imageData"), "{msg}");
     let obj = Object::new();
     Reflect::set(&obj, &"width".into(), &f64::NAN.into()).unwrap();
-    assert!(message_of(Exemplar::from_image_data(&obj)).contains("imageData.width"));
+    assert!(error_message(Exemplar::from_image_data(&obj)).contains("imageData.width"));
     let ex = Exemplar::from_bytes(BRICK_64).unwrap();
     let small = Uint8ClampedArray::new_with_length(10);
-    let msg = message_of(ex.render_into(&small));
+    let msg = error_message(ex.render_into(&small));
     assert!(
         msg.contains("target pixel array") && msg.contains("16384"),
         "{msg}"
@@ -93,7 +85,7 @@ fn forged_huge_png_header_is_an_error() {
     let mut png = BRICK_64.to_vec();
     png[16..20].copy_from_slice(&100_000u32.to_be_bytes());
     png[20..24].copy_from_slice(&100_000u32.to_be_bytes());
-    let msg = message_of(Exemplar::from_bytes(&png));
+    let msg = error_message(Exemplar::from_bytes(&png));
     assert!(
         msg.contains("100000") || msg.contains("could not decode"),
         "{msg}"

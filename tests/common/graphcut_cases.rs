@@ -1,37 +1,14 @@
 //! The JS-facing graph-cut sessions, as JavaScript calls them (Node and Chromium).
 
-use js_sys::{Object, Reflect, Uint8ClampedArray};
+use js_sys::Uint8ClampedArray;
 use texsynth::bindings::{Exemplar, GraphcutMerge, GraphcutTextures};
-use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
+
+use super::js_helpers::{error_message, get, options};
 
 const TILES_64: &[u8] = include_bytes!("../../www/samples/tiles_64.png");
 const SAND_64: &[u8] = include_bytes!("../../www/samples/sand_64.png");
-
-fn options(entries: &[(&str, JsValue)]) -> JsValue {
-    let obj = Object::new();
-    for (k, v) in entries {
-        Reflect::set(&obj, &(*k).into(), v).unwrap();
-    }
-    obj.into()
-}
-
-fn get(value: &JsValue, key: &str) -> JsValue {
-    Reflect::get(value, &key.into()).unwrap()
-}
-
-fn error_message<T>(result: Result<T, wasm_bindgen::JsError>) -> String {
-    let Err(err) = result else {
-        panic!("expected an error")
-    };
-    let value: JsValue = err.into();
-    String::from(
-        value
-            .dyn_ref::<js_sys::Error>()
-            .expect("a JS Error")
-            .message(),
-    )
-}
 
 #[wasm_bindgen_test]
 fn a_graphcut_session_places_patches_until_done() {

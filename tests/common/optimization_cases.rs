@@ -1,36 +1,13 @@
 //! The JS-facing `TextureOptimization` session, as JavaScript calls it (Node and Chromium).
 
-use js_sys::{Array, Object, Reflect, Uint8ClampedArray};
+use js_sys::{Array, Uint8ClampedArray};
 use texsynth::bindings::{Exemplar, TextureOptimization};
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test;
 
+use super::js_helpers::{error_message, get, options};
+
 const GRAVEL_64: &[u8] = include_bytes!("../../www/samples/gravel_64.png");
-
-fn options(entries: &[(&str, JsValue)]) -> JsValue {
-    let obj = Object::new();
-    for (k, v) in entries {
-        Reflect::set(&obj, &(*k).into(), v).unwrap();
-    }
-    obj.into()
-}
-
-fn get(value: &JsValue, key: &str) -> JsValue {
-    Reflect::get(value, &key.into()).unwrap()
-}
-
-fn error_message(result: Result<TextureOptimization, wasm_bindgen::JsError>) -> String {
-    let Err(err) = result else {
-        panic!("expected an error")
-    };
-    let value: JsValue = err.into();
-    String::from(
-        value
-            .dyn_ref::<js_sys::Error>()
-            .expect("a JS Error")
-            .message(),
-    )
-}
 
 #[wasm_bindgen_test]
 fn a_session_steps_renders_and_finishes() {

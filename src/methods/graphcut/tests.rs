@@ -5,17 +5,8 @@ use super::canvas::{Patch, UNCOVERED};
 use super::options::{Blend, Options, Placement, Transforms};
 use super::session::Session;
 use super::synthesis::Synthesis;
-use crate::core::{Image, Rng, decode};
-
-fn sample(name: &str) -> Image {
-    let path = format!("{}/www/samples/{name}.png", env!("CARGO_MANIFEST_DIR"));
-    decode(&std::fs::read(path).unwrap()).unwrap()
-}
-
-fn noise(w: usize, h: usize, c: usize, seed: u64) -> Image {
-    let mut rng = Rng::new(seed);
-    Image::from_fn(w, h, c, |_, _, _| rng.next_f32()).unwrap()
-}
+use crate::core::testing::{noise, sample};
+use crate::core::{Image, Rng};
 
 /// Every covered pixel shows exactly what its patch's source has at that place.
 fn assert_pixels_match_labels(s: &Synthesis) {

@@ -2,13 +2,9 @@
 
 use super::schedule::Level;
 use super::{EventKind, Options, Session};
-use crate::core::{Image, decode};
+use crate::core::Image;
+use crate::core::testing::sample;
 use crate::solvers::nn::Search;
-
-fn sample(name: &str) -> Image {
-    let path = format!("{}/www/samples/{name}.png", env!("CARGO_MANIFEST_DIR"));
-    decode(&std::fs::read(path).unwrap()).unwrap()
-}
 
 fn run(exemplar: &Image, options: Options) -> (Session, Vec<super::Event>) {
     let mut session = Session::new(exemplar, options).unwrap();
