@@ -8,11 +8,13 @@ mod merge;
 mod optimization;
 mod options;
 mod pixels;
+mod quality;
 
 pub use exemplar::Exemplar;
 pub use graphcut::GraphcutTextures;
 pub use merge::GraphcutMerge;
 pub use optimization::TextureOptimization;
+pub use quality::measure_quality;
 
 use wasm_bindgen::prelude::*;
 

@@ -2,3 +2,4 @@
 
 pub mod graphcut;
 pub mod optimization;
+pub mod quality;

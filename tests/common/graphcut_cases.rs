@@ -1,7 +1,7 @@
 //! The JS-facing graph-cut sessions, as JavaScript calls them (Node and Chromium).
 
 use js_sys::Uint8ClampedArray;
-use texsynth::bindings::{Exemplar, GraphcutMerge, GraphcutTextures};
+use texsynth::bindings::{Exemplar, GraphcutMerge, GraphcutTextures, measure_quality};
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -101,4 +101,27 @@ fn a_merge_honours_painted_constraints() {
     merge.render_seams(&target).unwrap();
     assert!(error_message(merge.set_constraints(&[0; 5])).contains("constraint mask"));
     assert!(error_message(GraphcutMerge::new(0, 5, None)).contains("output size 0x5"));
+}
+
+#[wasm_bindgen_test]
+fn quality_of_a_rendered_output() {
+    let ex = Exemplar::from_bytes(TILES_64).unwrap();
+    let opts = options(&[
+        ("outputWidth", 64.into()),
+        ("outputHeight", 64.into()),
+        ("refinementPatches", 2.into()),
+    ]);
+    let mut session = GraphcutTextures::new(&ex, opts).unwrap();
+    while !session.done() {
+        session.step().unwrap();
+    }
+    let target = Uint8ClampedArray::new_with_length(64 * 64 * 4);
+    session.render_into(&target).unwrap();
+    let q = measure_quality(&ex, &target.to_vec(), 64, 64).unwrap();
+    let coherence = get(&q, "coherence").as_f64().unwrap();
+    // Graph cut copies exemplar pixels: coherence is near zero except across seams.
+    assert!((0.0..0.01).contains(&coherence), "{coherence}");
+    assert!(get(&q, "completeness").as_f64().unwrap() >= 0.0);
+    assert!(error_message(measure_quality(&ex, &[0; 10], 64, 64)).contains("RGBA pixel data"));
+    assert!(error_message(measure_quality(&ex, &[0; 4 * 16], 4, 4)).contains("output size 4x4"));
 }

@@ -1,0 +1,155 @@
+//! Quality metrics that judge any synthesis, independent of the method's own parameters:
+//!
+//! - **coherence**: mean over output patches (7x7, stride 2) of the distance to the nearest
+//!   exemplar patch, as per-value mean squared error on 0..1 RGB: does every part of the output
+//!   look like some part of the exemplar? (The texture energy of Kwatra et al. 2005, made
+//!   method-independent.)
+//! - **completeness**: the same from exemplar patches (stride 2) to the nearest output patch:
+//!   does the output use all of the exemplar?
+//! - **histogram distance**: per-channel earth mover's distance between the colour histograms
+//!   (256 bins on 0..1), averaged over R, G, B; 0 means identical colour distributions.
+//!
+//! Lower is better for all three.
+
+mod nearest;
+
+use crate::core::{Error, Image, Result};
+use nearest::PatchIndex;
+
+/// Patch side of coherence and completeness.
+pub const PATCH: usize = 7;
+/// Spacing of the query patches.
+pub const STRIDE: usize = 2;
+const BINS: usize = 256;
+
+/// The three metrics of one output against its exemplar.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Quality {
+    pub coherence: f64,
+    pub completeness: f64,
+    pub histogram: f64,
+}
+
+/// Scores `output` against `exemplar` (any channel counts; both are compared as RGB).
+pub fn quality(exemplar: &Image, output: &Image) -> Result<Quality> {
+    for (what, img) in [("exemplar", exemplar), ("output", output)] {
+        if img.width() < PATCH || img.height() < PATCH {
+            return Err(Error::InvalidSize {
+                what,
+                width: img.width(),
+                height: img.height(),
+                reason: format!("quality metrics need at least {PATCH}x{PATCH}"),
+            });
+        }
+    }
+    let ex = exemplar.with_channels(3)?;
+    let out = output.with_channels(3)?;
+    Ok(Quality {
+        coherence: directed(&out, &ex),
+        completeness: directed(&ex, &out),
+        histogram: histogram_distance(&ex, &out),
+    })
+}
+
+/// Mean over the patches of `from` (stride 2) of the per-value MSE to the nearest patch of `to`.
+fn directed(from: &Image, to: &Image) -> f64 {
+    let index = PatchIndex::new(to.data(), to.width(), to.height(), PATCH);
+    let values = (PATCH * PATCH * 3) as f64;
+    let (mut total, mut count) = (0.0f64, 0usize);
+    for y in (0..=from.height() - PATCH).step_by(STRIDE) {
+        for x in (0..=from.width() - PATCH).step_by(STRIDE) {
+            total += f64::from(index.nearest(from.data(), from.width(), x, y)) / values;
+            count += 1;
+        }
+    }
+    total / count as f64
+}
+
+/// Per-channel earth mover's distance between 256-bin histograms, in units of the 0..1 range
+/// (the 1-D EMD is the area between the two cumulative distributions).
+fn histogram_distance(a: &Image, b: &Image) -> f64 {
+    let histogram = |img: &Image, channel: usize| {
+        let mut h = [0.0f64; BINS];
+        for px in img.data().chunks_exact(3) {
+            let bin = ((px[channel].clamp(0.0, 1.0) * (BINS - 1) as f32).round()) as usize;
+            h[bin] += 1.0;
+        }
+        let n = img.pixel_count() as f64;
+        h.map(|v| v / n)
+    };
+    let mut total = 0.0;
+    for channel in 0..3 {
+        let (ha, hb) = (histogram(a, channel), histogram(b, channel));
+        let (mut ca, mut cb, mut emd) = (0.0, 0.0, 0.0);
+        for k in 0..BINS {
+            ca += ha[k];
+            cb += hb[k];
+            emd += (ca - cb).abs();
+        }
+        total += emd / (BINS - 1) as f64;
+    }
+    total / 3.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::testing::{noise, sample};
+
+    #[test]
+    fn a_crop_of_the_exemplar_is_perfectly_coherent_but_incomplete() {
+        let ex = sample("gravel_64");
+        let crop = ex.crop(8, 8, 32, 32).unwrap();
+        let q = quality(&ex, &crop).unwrap();
+        assert!(q.coherence < 1e-9, "{q:?}");
+        assert!(
+            q.completeness > 1e-3,
+            "a crop misses most of the exemplar: {q:?}"
+        );
+        let itself = quality(&ex, &ex).unwrap();
+        assert!(itself.coherence < 1e-9 && itself.completeness < 1e-9 && itself.histogram < 1e-12);
+    }
+
+    #[test]
+    fn noise_scores_worse_than_the_exemplar_and_histograms_shift() {
+        let ex = sample("sand_64");
+        let q = quality(&ex, &noise(48, 48, 3, 1)).unwrap();
+        assert!(
+            q.coherence > 0.01 && q.completeness > 0.01 && q.histogram > 0.05,
+            "{q:?}"
+        );
+        // A uniform shift of every value by d moves each histogram by d.
+        let flat = Image::from_fn(16, 16, 3, |_, _, _| 0.25).unwrap();
+        let shifted = Image::from_fn(16, 16, 3, |_, _, _| 0.5).unwrap();
+        let h = quality(&flat, &shifted).unwrap().histogram;
+        assert!((h - 0.25).abs() < 0.01, "{h}");
+    }
+
+    #[test]
+    fn too_small_images_are_refused() {
+        let tiny = Image::new(6, 20, 1).unwrap();
+        let msg = quality(&tiny, &tiny).unwrap_err().to_string();
+        assert!(msg.contains("exemplar size 6x20"), "{msg}");
+    }
+}
+
+#[cfg(test)]
+mod timing {
+    /// A measurement, not a check: `cargo test --release --lib -- --ignored --nocapture quality_timing`.
+    #[test]
+    #[ignore = "a timing report; run with --release --ignored --nocapture"]
+    fn quality_timing() {
+        use crate::core::testing::sample;
+        use crate::methods::graphcut::{Options, Session};
+        let ex = sample("tiles_128");
+        let mut session = Session::new(&ex, Options::default()).unwrap();
+        while !session.step().unwrap().done {}
+        let out = session.output().unwrap();
+        let start = std::time::Instant::now();
+        let q = super::quality(&ex, &out).unwrap();
+        println!(
+            "quality of a 256x256 graph-cut output of tiles_128: {q:?} in {:.0} ms",
+            start.elapsed().as_secs_f64() * 1e3
+        );
+    }
+}
