@@ -43,6 +43,8 @@ test('the graph-cut panel places patches live and runs to done', async () => {
   assert.match(await page.textContent('#gc-readout'), /patches · .* · covered/);
   const withSeams = await canvasPixels(page);
   assert.ok(redPixels(withSeams) > 50, 'the seam overlay is drawn');
+  assert.match(await page.textContent('#gc-quality'), /coherence .* completeness .* histogram/);
+  assert.ok(Number(await page.getAttribute('#gc-quality', 'data-coherence')) >= 0);
   await page.screenshot({ path: `${RESULTS}/graphcut.png`, fullPage: true });
   await page.uncheck('#gc-seams');
   assert.equal(redPixels(await canvasPixels(page)), 0, 'the seam overlay toggles off');

@@ -51,6 +51,8 @@ test('stepping redraws, running reaches done, the plot has points', async () => 
   assert.ok((await plotInk(page)) > 20 * 2, 'the energy plot shows its points');
   const final = await canvasPixels(page, 'output-canvas');
   assert.ok(new Set(final).size > 50, 'the output is a texture, not a flat colour');
+  assert.match(await page.textContent('#to-quality'), /coherence .* completeness .* histogram/);
+  assert.ok(Number(await page.getAttribute('#to-quality', 'data-coherence')) >= 0);
   await page.screenshot({ path: `${RESULTS}/optimization.png`, fullPage: true });
 
   await page.check('#to-teaching');

@@ -4,6 +4,7 @@
 import { GraphcutTextures } from '../pkg/texsynth.js';
 import { drawInto, drawOverlay, strokeRect } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
+import { showQuality } from '../lib/quality.js';
 
 export const id = 'graphcut';
 export const title = 'Graphcut textures';
@@ -32,6 +33,7 @@ const OPTIONS_HTML = `
 const SIDE_HTML = `
   <div class="readout" id="gc-readout">press Run or Step</div>
   <canvas id="gc-plot" class="plot" width="296" height="170" aria-label="Seam cost plot"></canvas>
+  <p class="quality" id="gc-quality"></p>
   <p class="legend">Outline: the patch just placed (orange) and the error region it had to cover (dashed).</p>`;
 
 export function createPanel(ui) {
@@ -97,7 +99,10 @@ export function createPanel(ui) {
         `${event.patchesPlaced} patches · ${where} · took ${event.pixelsTaken} px · cut ${event.cutCost.toFixed(2)} · ` +
         `total seam cost ${event.totalSeamCost.toFixed(1)} · ${event.covered ? 'covered' : 'covering…'}`;
       document.body.dataset.patches = String(event.patchesPlaced);
-      if (event.done) document.body.dataset.graphcutDone = 'true';
+      if (event.done) {
+        showQuality(ui.$('gc-quality'), ui.exemplar(), session);
+        document.body.dataset.graphcutDone = 'true';
+      }
     },
     reset() {
       session?.free();
@@ -107,6 +112,7 @@ export function createPanel(ui) {
       delete document.body.dataset.graphcutDone;
       document.body.dataset.patches = '0';
       ui.$('gc-readout').textContent = 'press Run or Step';
+      ui.$('gc-quality').textContent = '';
       drawLinePlot(ui.$('gc-plot'), [], { title: 'total seam cost per patch' });
       ui.outputCanvas.getContext('2d').clearRect(0, 0, ui.outputCanvas.width, ui.outputCanvas.height);
     },

@@ -4,6 +4,7 @@
 import { TextureOptimization } from '../pkg/texsynth.js';
 import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
+import { showQuality } from '../lib/quality.js';
 
 export const id = 'optimization';
 export const title = 'Texture optimization';
@@ -23,7 +24,8 @@ const OPTIONS_HTML = `
 const SIDE_HTML = `
   <div class="readout" id="to-readout">press Run or Step</div>
   <canvas id="to-energy" class="plot" width="296" height="170" aria-label="Energy plot"></canvas>
-  <p class="legend" id="to-legend"></p>`;
+  <p class="legend" id="to-legend"></p>
+  <p class="quality" id="to-quality"></p>`;
 
 /** Creates the panel. `ui` gives the shared controls, canvas and exemplar. */
 export function createPanel(ui) {
@@ -109,7 +111,10 @@ export function createPanel(ui) {
         `neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration} · ` +
         `energy ${event.energy.toPrecision(4)} · ${event.changed} matches changed`;
       document.body.dataset.iterations = String(event.totalIterations);
-      if (event.done) document.body.dataset.optimizationDone = 'true';
+      if (event.done) {
+        showQuality(ui.$('to-quality'), ui.exemplar(), session);
+        document.body.dataset.optimizationDone = 'true';
+      }
     },
     reset() {
       session?.free();
@@ -117,6 +122,7 @@ export function createPanel(ui) {
       delete document.body.dataset.optimizationDone;
       document.body.dataset.iterations = '0';
       ui.$('to-readout').textContent = 'press Run or Step';
+      ui.$('to-quality').textContent = '';
       ui.$('to-legend').textContent = '';
       drawLinePlot(ui.$('to-energy'), [], { title: 'energy per iteration (Fig. 3)' });
       const ctx = ui.outputCanvas.getContext('2d');
