@@ -5,6 +5,7 @@
 //! and the Gaussian fall-off g inside it. With the gradient term it is the solution of a
 //! weighted screened Poisson system ([`crate::solvers::poisson`]), warm-started from the output.
 
+use super::constraints::Constraint;
 use crate::core::{Edge, Image};
 use crate::solvers::nn::Pos;
 use crate::solvers::poisson::ScreenedPoisson;
@@ -29,8 +30,9 @@ pub struct Matches<'a> {
     pub mu: f32,
 }
 
-/// Replaces `output` by the minimiser of the energy for `m`.
-pub fn e_step(m: &Matches<'_>, output: &mut Image) {
+/// Replaces `output` by the minimiser of the energy for `m`, plus the soft-constraint term of
+/// `constraint` when given (section 4: a weighted average with the constraint colours).
+pub fn e_step(m: &Matches<'_>, output: &mut Image, constraint: Option<&Constraint>) {
     let (w, h, c) = (output.width(), output.height(), output.channels());
     let (ew, eh) = (m.exemplar.width(), m.exemplar.height());
     let ex = m.exemplar.data();
@@ -77,6 +79,9 @@ pub fn e_step(m: &Matches<'_>, output: &mut Image) {
                 }
             }
         }
+    }
+    if let Some(constraint) = constraint {
+        constraint.add_to_e_step(&mut colour, &mut weight);
     }
     let out = output.data_mut();
     if !gradient {
@@ -168,7 +173,7 @@ mod tests {
             mu: 0.0,
         };
         let mut out = Image::new(9, 7, 2).unwrap();
-        e_step(&m, &mut out);
+        e_step(&m, &mut out, None);
         // Brute force: for every output pixel, visit every neighbourhood that contains it.
         for y in 0..7 {
             for x in 0..9 {
@@ -225,7 +230,7 @@ mod tests {
                 mu,
             };
             let mut out = Image::new(9, 7, 2).unwrap();
-            e_step(&m, &mut out);
+            e_step(&m, &mut out, None);
             let best = energy(&out, &m);
             // Any perturbation of any pixel raises the energy.
             let mut rng = Rng::new(2);

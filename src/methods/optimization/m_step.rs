@@ -39,25 +39,33 @@ impl Matcher {
     }
 
     /// Recomputes `distances` for the current `matches` (the queries changed in the E-step), then
-    /// improves the matches. Returns how many matches changed.
+    /// improves the matches. `weights`, when given, are per-value weights for every query (soft
+    /// constraints) in place of the Gaussian fall-off. Returns how many matches changed.
     pub fn m_step(
         &self,
         queries: &[f32],
+        weights: Option<&[f32]>,
         grid: QueryGrid<'_>,
         matches: &mut [Pos],
         distances: &mut [f32],
         rng: &mut Rng,
     ) -> usize {
         let len = self.space.vector_len();
+        let weights_of =
+            |n: usize| weights.map_or(self.space.weights(), |w| &w[n * len..(n + 1) * len]);
         for (n, (m, d)) in matches.iter().zip(distances.iter_mut()).enumerate() {
-            *d = self
-                .space
-                .distance(&queries[n * len..(n + 1) * len], *m, f32::INFINITY);
+            *d = self.space.distance_with(
+                &queries[n * len..(n + 1) * len],
+                weights_of(n),
+                *m,
+                f32::INFINITY,
+            );
         }
         match self.search {
             Search::PatchMatch => patchmatch::improve(
                 &self.space,
                 queries,
+                weights,
                 grid,
                 matches,
                 distances,
@@ -69,8 +77,15 @@ impl Matcher {
                 for (n, (m, d)) in matches.iter_mut().zip(distances.iter_mut()).enumerate() {
                     let query = &queries[n * len..(n + 1) * len];
                     let (pos, dist) = match &self.tree {
-                        Some(tree) => tree.nearest(&self.space, query),
-                        None => exact::nearest(&self.space, query),
+                        // The tree is built for the fall-off weights: it proposes a candidate
+                        // for the (constrained) query, which is then scored under the query's
+                        // own weights, so a match still only changes to a better one.
+                        Some(tree) => {
+                            let pos = tree.nearest(&self.space, query).0;
+                            let d = self.space.distance_with(query, weights_of(n), pos, *d);
+                            (pos, d)
+                        }
+                        None => exact::nearest_with(&self.space, query, weights_of(n)),
                     };
                     if dist < *d {
                         changed += usize::from(pos != *m);

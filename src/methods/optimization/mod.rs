@@ -3,8 +3,10 @@
 //! best output for fixed matches) and an M-step (the best matches for a fixed output), with
 //! robust IRLS weights, an optional gradient energy, and a coarse-to-fine schedule.
 
+pub mod constraints;
 pub mod e_step;
 pub mod features;
+pub mod level;
 pub mod m_step;
 pub mod options;
 pub mod schedule;
@@ -14,5 +16,6 @@ pub mod teaching;
 #[cfg(test)]
 mod tests;
 
+pub use constraints::SoftConstraints;
 pub use options::Options;
 pub use session::{Event, EventKind, Session};

@@ -1,17 +1,15 @@
 //! The texture-optimisation session (Kwatra et al. 2005, Algorithm 1 with sections 3.1 and 3.2):
 //! a state machine whose `step()` runs one EM iteration of the planned schedule.
 
-use super::e_step::{Matches, e_step, edge, robust_weight};
-use super::features::{feature_map, gather};
-use super::m_step::Matcher;
+use super::constraints::{Constraint, SoftConstraints};
+use super::e_step::edge;
+use super::level::{LevelSetup, LevelSolver, fit_output};
 use super::options::Options;
-use super::schedule::{Level, grid_axis, nearest_corner, plan};
+use super::schedule::{Level, plan};
 use crate::core::pyramid::gaussian_pyramid;
 use crate::core::sample::resize_bilinear;
-use crate::core::{Edge, Image, Result, Rng};
+use crate::core::{Edge, Error, Image, Result, Rng};
 use crate::solvers::nn::Pos;
-use crate::solvers::nn::patches::gaussian_falloff;
-use crate::solvers::nn::patchmatch::QueryGrid;
 
 /// What a step did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -62,22 +60,17 @@ pub struct Session {
     level: usize,
     iteration: usize,
     output: Option<Image>,
-    state: Option<LevelState>,
+    /// The level being worked on, once entered.
+    solver: Option<LevelSolver>,
+    /// Which level `solver` is for.
+    entered: Option<usize>,
+    /// True until the first M-step of a level ran on the up-sampled output.
+    fresh: bool,
+    /// Soft constraints at full resolution, and their copy at the current level's size.
+    constraints: Option<SoftConstraints>,
+    constraint: Option<Constraint>,
     history: Vec<EnergyPoint>,
     last: Option<Event>,
-}
-
-/// What a level needs between iterations.
-struct LevelState {
-    matcher: Matcher,
-    cols: Vec<usize>,
-    rows: Vec<usize>,
-    matches: Vec<Pos>,
-    distances: Vec<f32>,
-    falloff: Vec<f32>,
-    queries: Vec<f32>,
-    /// True until the first M-step of the level ran on the up-sampled output.
-    fresh: bool,
 }
 
 impl Session {
@@ -95,10 +88,61 @@ impl Session {
             level: 0,
             iteration: 0,
             output: None,
-            state: None,
+            solver: None,
+            entered: None,
+            fresh: false,
+            constraints: None,
+            constraint: None,
             history: Vec::new(),
             last: None,
         })
+    }
+
+    /// Sets (or with `None` removes) the soft constraints of Algorithm 2. The target must have
+    /// the output's size and the exemplar's channel count. They apply from the next step; a
+    /// finished session reopens its finest level for another round of iterations, so that
+    /// painting on a finished output makes the synthesis follow.
+    pub fn set_constraints(&mut self, constraints: Option<SoftConstraints>) -> Result<()> {
+        if let Some(c) = &constraints {
+            let (w, h) = (self.options.output_width, self.options.output_height);
+            if (c.target.width(), c.target.height()) != (w, h) {
+                return Err(Error::InvalidSize {
+                    what: "constraint target",
+                    width: c.target.width(),
+                    height: c.target.height(),
+                    reason: format!("must match the output size {w}x{h}"),
+                });
+            }
+            if c.target.channels() != self.exemplars[0].channels() {
+                return Err(Error::InvalidParameter {
+                    name: "target",
+                    reason: format!(
+                        "has {} channels, the exemplar {}",
+                        c.target.channels(),
+                        self.exemplars[0].channels()
+                    ),
+                });
+            }
+        }
+        self.constraints = constraints;
+        self.constraint = self.level_constraint();
+        if self.is_done() && self.entered.is_some() {
+            self.level = self.levels.len() - 1;
+            self.iteration = 0;
+        }
+        Ok(())
+    }
+
+    #[must_use]
+    pub fn constraints(&self) -> Option<&SoftConstraints> {
+        self.constraints.as_ref()
+    }
+
+    /// The constraint at the entered level's resolution.
+    fn level_constraint(&self) -> Option<Constraint> {
+        let lv = self.levels[self.entered?];
+        let c = self.constraints.as_ref()?;
+        Some(c.at_size(lv.output_width, lv.output_height))
     }
 
     #[must_use]
@@ -136,9 +180,10 @@ impl Session {
     /// The neighbourhood grid and its matches: (column corners, row corners, z_p per node).
     #[must_use]
     pub fn matches(&self) -> Option<(&[usize], &[usize], &[Pos])> {
-        self.state
-            .as_ref()
-            .map(|s| (s.cols.as_slice(), s.rows.as_slice(), s.matches.as_slice()))
+        self.solver.as_ref().map(|s| {
+            let (cols, rows) = s.grid();
+            (cols, rows, s.matches())
+        })
     }
 
     /// The current output up-sampled to the full output size (coarse levels look blocky-smooth).
@@ -158,7 +203,7 @@ impl Session {
             last.kind = EventKind::Done;
             return Ok(last);
         }
-        let kind = if self.iteration == 0 {
+        let kind = if self.entered != Some(self.level) {
             self.enter_level()?;
             EventKind::Level
         } else {
@@ -197,70 +242,35 @@ impl Session {
     /// the output at its resolution, and matches carried over from the previous level.
     fn enter_level(&mut self) -> Result<()> {
         let lv = self.levels[self.level];
-        let wrap = self.options.tileable;
-        let exemplar = &self.exemplars[lv.octave];
-        let matcher = Matcher::new(
-            feature_map(exemplar, self.options.mu, Edge::Clamp),
-            lv.size,
-            self.options.search,
-            &mut self.rng,
-        );
-        let cols = grid_axis(lv.output_width, lv.size, lv.spacing, wrap);
-        let rows = grid_axis(lv.output_height, lv.size, lv.spacing, wrap);
-        let (ex_nx, ex_ny) = matcher.space().extent();
-        let previous = self.level.checked_sub(1).map(|i| self.levels[i]);
-        let matches: Vec<Pos> = match (&self.state, previous) {
-            (Some(old), Some(prev)) => {
-                // Carry each node's match over: find the old node nearest to the new node's
-                // centre, follow its match, and rescale to this level's exemplar.
-                let sx = lv.exemplar_width as f64 / prev.exemplar_width as f64;
-                let sy = lv.exemplar_height as f64 / prev.exemplar_height as f64;
-                let ox = prev.output_width as f64 / lv.output_width as f64;
-                let oy = prev.output_height as f64 / lv.output_height as f64;
-                let half_old = prev.size as f64 / 2.0;
-                let half_new = lv.size as f64 / 2.0;
-                let old_nx = old.cols.len();
-                let mut carried = Vec::with_capacity(cols.len() * rows.len());
-                for &y in &rows {
-                    for &x in &cols {
-                        let (cx, cy) = ((x as f64 + half_new) * ox, (y as f64 + half_new) * oy);
-                        let i = nearest_corner(&old.cols, cx - half_old);
-                        let j = nearest_corner(&old.rows, cy - half_old);
-                        let z = old.matches[j * old_nx + i];
-                        let zx = (f64::from(z.x) + cx - old.cols[i] as f64) * sx - half_new;
-                        let zy = (f64::from(z.y) + cy - old.rows[j] as f64) * sy - half_new;
-                        carried.push(matcher.space().clamp(zx.round() as i64, zy.round() as i64));
-                    }
-                }
-                carried
-            }
-            // Bootstrap: a random neighbourhood for every node.
-            _ => (0..cols.len() * rows.len())
-                .map(|_| Pos::new(self.rng.index(ex_nx), self.rng.index(ex_ny)))
-                .collect(),
+        let setup = LevelSetup {
+            output_width: lv.output_width,
+            output_height: lv.output_height,
+            size: lv.size,
+            spacing: lv.spacing,
+            search: self.options.search,
+            r: self.options.r,
+            mu: self.options.mu,
+            wrap: self.options.tileable,
         };
-        if let Some(out) = &self.output {
-            if out.width() != lv.output_width || out.height() != lv.output_height {
-                self.output = Some(resize_bilinear(
-                    out,
-                    lv.output_width,
-                    lv.output_height,
-                    edge(wrap),
-                )?);
-            }
+        let mut solver = LevelSolver::new(&self.exemplars[lv.octave], setup, &mut self.rng);
+        let previous = self.level.checked_sub(1).map(|i| self.levels[i]);
+        if let (Some(old), Some(prev)) = (&self.solver, previous) {
+            // Old node centres are in the previous level's output coordinates.
+            let ox = prev.output_width as f64 / lv.output_width as f64;
+            let oy = prev.output_height as f64 / lv.output_height as f64;
+            let scale = (
+                lv.exemplar_width as f64 / prev.exemplar_width as f64,
+                lv.exemplar_height as f64 / prev.exemplar_height as f64,
+            );
+            solver.carry_from(old, |cx, cy| (cx * ox, cy * oy), scale);
         }
-        let nodes = matches.len();
-        let len = matcher.space().vector_len();
-        self.state = Some(LevelState {
-            falloff: gaussian_falloff(lv.size, 1),
-            queries: vec![0.0; nodes * len],
-            distances: vec![f32::INFINITY; nodes],
-            matcher,
-            cols,
-            rows,
-            matches,
-            fresh: self.output.is_some(),
-        });
+        if let Some(out) = self.output.take() {
+            self.output = Some(fit_output(out, &setup)?);
+        }
+        self.fresh = self.output.is_some();
+        self.solver = Some(solver);
+        self.entered = Some(self.level);
+        self.constraint = self.level_constraint();
         Ok(())
     }
 
@@ -268,13 +278,13 @@ impl Session {
     /// with IRLS weights, M-step. Returns how many matches changed in the final M-step.
     fn iterate(&mut self) -> Result<usize> {
         let lv = self.levels[self.level];
-        let (r, mu, wrap) = (self.options.r, self.options.mu, self.options.tileable);
         let exemplar = &self.exemplars[lv.octave];
-        let state = self.state.as_mut().expect("level entered");
-        if state.fresh {
+        let solver = self.solver.as_mut().expect("level entered");
+        let constraint = self.constraint.as_ref();
+        if self.fresh {
             let out = self.output.as_ref().expect("fresh levels have an output");
-            m_step(state, out, mu, wrap, &mut self.rng);
-            state.fresh = false;
+            solver.m_step(out, constraint, &mut self.rng);
+            self.fresh = false;
         }
         let output = match &mut self.output {
             Some(out) => out,
@@ -284,72 +294,22 @@ impl Session {
                 exemplar.channels(),
             )?),
         };
-        // IRLS: weights from the current distances (all 1 on the bootstrap iteration).
-        let weights: Vec<f32> = state
-            .distances
-            .iter()
-            .map(|&d| {
-                if d.is_finite() {
-                    robust_weight(d, r)
-                } else {
-                    1.0
-                }
-            })
-            .collect();
-        let m = Matches {
-            exemplar,
-            cols: &state.cols,
-            rows: &state.rows,
-            matches: &state.matches,
-            node_weights: &weights,
-            falloff: &state.falloff,
-            size: lv.size,
-            wrap,
-            mu,
-        };
-        e_step(&m, output);
-        Ok(m_step(state, output, mu, wrap, &mut self.rng))
+        solver.e_step(exemplar, output, constraint);
+        Ok(solver.m_step(output, constraint, &mut self.rng))
     }
 
-    /// sum_p d_p^(r/2) / (nodes * w^2), from the distances of the last M-step.
+    /// The texture energy of the last M-step (see [`LevelSolver::energy`]).
     fn energy(&self) -> f64 {
-        let state = self.state.as_ref().expect("level entered");
-        let half_r = f64::from(self.options.r) / 2.0;
-        let total: f64 = state
-            .distances
-            .iter()
-            .map(|&d| f64::from(d).powf(half_r))
-            .sum();
-        let size = self.levels[self.level.min(self.levels.len() - 1)].size;
-        total / (state.distances.len() * size * size) as f64
+        self.solver.as_ref().expect("level entered").energy()
     }
-}
 
-/// Gathers the output neighbourhoods and runs the matcher on them.
-fn m_step(state: &mut LevelState, output: &Image, mu: f32, wrap: bool, rng: &mut Rng) -> usize {
-    let map = feature_map(output, mu, edge(wrap));
-    let size = state.matcher.space().size();
-    let len = state.matcher.space().vector_len();
-    let nx = state.cols.len();
-    for (n, query) in state.queries.chunks_exact_mut(len).enumerate() {
-        gather(
-            &map,
-            state.cols[n % nx],
-            state.rows[n / nx],
-            size,
-            wrap,
-            query,
-        );
+    /// The soft-constraint energy of the current output (0 without constraints): the mean
+    /// squared difference to the constraint colours over the constrained pixels.
+    #[must_use]
+    pub fn constraint_energy(&self) -> f64 {
+        match (&self.constraint, &self.output) {
+            (Some(c), Some(out)) if c.target.width() == out.width() => c.energy(out),
+            _ => 0.0,
+        }
     }
-    let grid = QueryGrid {
-        cols: &state.cols,
-        rows: &state.rows,
-    };
-    state.matcher.m_step(
-        &state.queries,
-        grid,
-        &mut state.matches,
-        &mut state.distances,
-        rng,
-    )
 }

@@ -257,3 +257,78 @@ fn invalid_options_are_refused_by_name() {
         .contains("output size")
     );
 }
+
+/// A constraint painting `colour` over the rectangle [x0, x1) x [y0, y1) of a `w` x `h` output.
+fn painted(
+    w: usize,
+    h: usize,
+    channels: usize,
+    colour: f32,
+    (x0, x1, y0, y1): (usize, usize, usize, usize),
+    lambda: f32,
+) -> super::SoftConstraints {
+    let target = Image::from_fn(w, h, channels, |_, _, _| colour).unwrap();
+    let mask = (0..w * h)
+        .map(|i| {
+            let (x, y) = (i % w, i / w);
+            f32::from(u8::from((x0..x1).contains(&x) && (y0..y1).contains(&y)))
+        })
+        .collect();
+    super::SoftConstraints::new(target, mask, lambda).unwrap()
+}
+
+#[test]
+fn soft_constraints_pull_the_output_toward_their_colours_as_lambda_grows() {
+    let exemplar = sample("tiles_64");
+    let c = exemplar.channels();
+    let mut errors = Vec::new();
+    for lambda in [0.0, 0.25, 1.0, 4.0, 16.0] {
+        let mut session = Session::new(&exemplar, small(Search::PatchMatch)).unwrap();
+        session
+            .set_constraints(Some(painted(48, 40, c, 1.0, (12, 36, 10, 30), lambda)))
+            .unwrap();
+        while session.step().unwrap().kind != EventKind::Done {}
+        errors.push(session.constraint_energy());
+    }
+    // Each step up in lambda brings the painted square closer to white; the strongest lands
+    // far closer than the free synthesis (the texture still has its say at lambda 16).
+    for pair in errors.windows(2) {
+        assert!(pair[1] < pair[0], "errors by lambda: {errors:?}");
+    }
+    assert!(errors[4] < 0.1 * errors[0], "errors by lambda: {errors:?}");
+}
+
+#[test]
+fn constraints_set_on_a_finished_session_reopen_the_finest_level() {
+    let exemplar = sample("gravel_64");
+    let (mut session, events) = run(&exemplar, small(Search::PatchMatch));
+    let before = session.output_full_size().unwrap();
+    let free_error = {
+        session
+            .set_constraints(Some(painted(48, 40, 1, 0.0, (0, 24, 0, 40), 4.0)))
+            .unwrap();
+        session.constraint_energy()
+    };
+    let event = session.step().unwrap();
+    assert_eq!(event.level, events.last().unwrap().level);
+    while session.step().unwrap().kind != EventKind::Done {}
+    assert!(session.constraint_energy() < 0.5 * free_error);
+    assert_ne!(session.output_full_size().unwrap(), before);
+    // Wrong sizes and channel counts are refused by name.
+    let wrong = painted(40, 40, 1, 0.0, (0, 1, 0, 1), 1.0);
+    assert!(
+        session
+            .set_constraints(Some(wrong))
+            .unwrap_err()
+            .to_string()
+            .contains("48x40")
+    );
+    let rgb = painted(48, 40, 3, 0.0, (0, 1, 0, 1), 1.0);
+    assert!(
+        session
+            .set_constraints(Some(rgb))
+            .unwrap_err()
+            .to_string()
+            .contains("channels")
+    );
+}

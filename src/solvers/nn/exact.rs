@@ -7,10 +7,16 @@ use super::patches::{Neighbourhoods, Pos};
 /// the answer is deterministic. The running best is the early-exit bound of every comparison.
 #[must_use]
 pub fn nearest(space: &Neighbourhoods, query: &[f32]) -> (Pos, f32) {
+    nearest_with(space, query, space.weights())
+}
+
+/// [`nearest`] under per-value `weights` of the query's own.
+#[must_use]
+pub fn nearest_with(space: &Neighbourhoods, query: &[f32], weights: &[f32]) -> (Pos, f32) {
     let mut best = (Pos::default(), f32::INFINITY);
     for i in 0..space.count() {
         let pos = space.pos_of(i);
-        let d = space.distance(query, pos, best.1);
+        let d = space.distance_with(query, weights, pos, best.1);
         if d < best.1 {
             best = (pos, d);
         }

@@ -176,6 +176,14 @@ impl Neighbourhoods {
     #[inline]
     #[must_use]
     pub fn distance(&self, query: &[f32], pos: Pos, bound: f32) -> f32 {
+        self.distance_with(query, &self.weights, pos, bound)
+    }
+
+    /// [`Neighbourhoods::distance`] with per-value `weights` of the query's own (soft
+    /// constraints weigh constrained pixels more, Kwatra et al. 2005 section 4).
+    #[inline]
+    #[must_use]
+    pub fn distance_with(&self, query: &[f32], weights: &[f32], pos: Pos, bound: f32) -> f32 {
         let row_len = self.size * self.exemplar.dims;
         let mut sum = 0.0;
         for dy in 0..self.size {
@@ -183,7 +191,7 @@ impl Neighbourhoods {
                 .exemplar
                 .row(pos.x as usize, pos.y as usize + dy, self.size);
             let range = dy * row_len..(dy + 1) * row_len;
-            sum += weighted_ssd(&query[range.clone()], row, &self.weights[range]);
+            sum += weighted_ssd(&query[range.clone()], row, &weights[range]);
             if sum > bound {
                 return sum;
             }

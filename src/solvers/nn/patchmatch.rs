@@ -16,10 +16,13 @@ pub struct QueryGrid<'a> {
 
 /// Improves `matches` (and their `distances`, which must be current) in place by `passes`
 /// alternating forward/backward sweeps. A match only ever changes to a strictly closer one, so
-/// the energy cannot rise. Returns how many nodes changed.
+/// the energy cannot rise. `query_weights`, when given, holds per-value weights for every query
+/// (laid out like `queries`) in place of the space's own. Returns how many nodes changed.
+#[allow(clippy::too_many_arguments)]
 pub fn improve(
     space: &Neighbourhoods,
     queries: &[f32],
+    query_weights: Option<&[f32]>,
     grid: QueryGrid<'_>,
     matches: &mut [Pos],
     distances: &mut [f32],
@@ -38,10 +41,11 @@ pub fn improve(
             let i = if forward { k } else { nx * ny - 1 - k };
             let (gx, gy) = (i % nx, i / nx);
             let query = &queries[i * len..(i + 1) * len];
+            let weights = query_weights.map_or(space.weights(), |w| &w[i * len..(i + 1) * len]);
             let mut best = (matches[i], distances[i]);
             let consider = |candidate: Pos, best: &mut (Pos, f32)| {
                 if candidate != best.0 {
-                    let d = space.distance(query, candidate, best.1);
+                    let d = space.distance_with(query, weights, candidate, best.1);
                     if d < best.1 {
                         *best = (candidate, d);
                     }
@@ -150,6 +154,7 @@ mod tests {
             improve(
                 &space,
                 &queries,
+                None,
                 grid,
                 &mut matches,
                 &mut distances,
@@ -194,6 +199,7 @@ mod tests {
             improve(
                 &space,
                 &queries,
+                None,
                 grid,
                 &mut matches,
                 &mut distances,

@@ -1,0 +1,268 @@
+//! Soft constraints (Kwatra et al. 2005, section 4, eq. 2 and Algorithm 2): desired colours at
+//! some output pixels, pulled on with weight lambda.
+//!
+//! The paper leaves the scale of lambda open. Here it is relative to the texture term at each
+//! pixel, in both steps:
+//! - E-step: the pixel becomes `(texture average + lambda m c) / (1 + lambda m)`, so lambda = 1
+//!   lands half way between what the texture neighbourhoods say and the constraint colour c, and
+//!   a large lambda makes the constraint hard. (The energy minimised is eq. 2 with a per-pixel
+//!   weight lambda m_k W_k, W_k the texture weight the pixel already has.)
+//! - M-step: z_p minimises `sum g (x - v)^2 + lambda m g (v - c)^2` over the neighbourhood, the
+//!   paper's `||x_p - z_p||^2 + lambda E_c(y)`; completing the square turns it into a weighted
+//!   nearest-neighbour search for the query `(x + lambda m c) / (1 + lambda m)` with weights
+//!   `g (1 + lambda m)`.
+//!
+//! `m` is the mask (0 = free, 1 = fully constrained; fractions soften stroke edges).
+
+use crate::core::{Error, Image, Result};
+
+/// Soft constraints at full output resolution, as the caller gave them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SoftConstraints {
+    /// Desired colours, output size, the exemplar's channel count.
+    pub target: Image,
+    /// Per-pixel mask m in [0, 1], `width * height` long.
+    pub mask: Vec<f32>,
+    /// Weight lambda >= 0 of the constraint term.
+    pub lambda: f32,
+}
+
+/// The largest lambda accepted: beyond it the constraint is hard for all practical purposes.
+pub const MAX_LAMBDA: f32 = 1e6;
+
+impl SoftConstraints {
+    /// Checks the mask length, the mask and target values and lambda; the error names the problem.
+    pub fn new(target: Image, mask: Vec<f32>, lambda: f32) -> Result<Self> {
+        let pixels = target.width() * target.height();
+        if mask.len() != pixels {
+            return Err(Error::LengthMismatch {
+                what: "constraint mask",
+                expected: pixels,
+                actual: mask.len(),
+            });
+        }
+        if let Some(bad) = mask.iter().find(|m| !(0.0..=1.0).contains(*m)) {
+            return Err(Error::InvalidParameter {
+                name: "mask",
+                reason: format!("every value must be between 0 and 1, got {bad}"),
+            });
+        }
+        if target.data().iter().any(|v| !v.is_finite()) {
+            return Err(Error::InvalidParameter {
+                name: "target",
+                reason: "every colour must be finite".into(),
+            });
+        }
+        if !lambda.is_finite() || !(0.0..=MAX_LAMBDA).contains(&lambda) {
+            return Err(Error::InvalidParameter {
+                name: "lambda",
+                reason: format!("must be between 0 and {MAX_LAMBDA}, got {lambda}"),
+            });
+        }
+        Ok(SoftConstraints {
+            target,
+            mask,
+            lambda,
+        })
+    }
+
+    /// The constraint at a level of `width` x `height` (the output, or a coarser level of it).
+    /// Shrinking is a box filter of the mask and of the mask-weighted colours, so a thin stroke
+    /// survives as a fainter one instead of being skipped.
+    #[must_use]
+    pub fn at_size(&self, width: usize, height: usize) -> Constraint {
+        let (sw, sh, c) = (
+            self.target.width(),
+            self.target.height(),
+            self.target.channels(),
+        );
+        if (sw, sh) == (width, height) {
+            return Constraint {
+                target: self.target.clone(),
+                mask: self.mask.clone(),
+                lambda: self.lambda,
+            };
+        }
+        let mut mass = vec![0.0f32; width * height];
+        let mut count = vec![0.0f32; width * height];
+        let mut colour = vec![0.0f32; width * height * c];
+        let src = self.target.data();
+        for y in 0..sh {
+            let ty = (y * height / sh).min(height - 1);
+            for x in 0..sw {
+                let tx = (x * width / sw).min(width - 1);
+                let (s, t) = (y * sw + x, ty * width + tx);
+                let m = self.mask[s];
+                mass[t] += m;
+                count[t] += 1.0;
+                for k in 0..c {
+                    colour[t * c + k] += m * src[s * c + k];
+                }
+            }
+        }
+        for t in 0..width * height {
+            if mass[t] > 0.0 {
+                for k in 0..c {
+                    colour[t * c + k] /= mass[t];
+                }
+            }
+        }
+        Constraint {
+            target: Image::from_vec(width, height, c, colour).expect("sizes agree"),
+            mask: mass
+                .iter()
+                .zip(&count)
+                .map(|(&m, &n)| m / n.max(1.0))
+                .collect(),
+            lambda: self.lambda,
+        }
+    }
+}
+
+/// A constraint at one level's resolution: target colours, mask m per pixel, and lambda.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Constraint {
+    pub target: Image,
+    pub mask: Vec<f32>,
+    pub lambda: f32,
+}
+
+impl Constraint {
+    /// Adds the constraint to the E-step's per-pixel sums (`colour` = sum of weighted matched
+    /// colours, `weight` = W, the sum of their weights): afterwards `colour / weight` is the
+    /// constrained minimiser, and the same arrays feed the screened Poisson solve.
+    pub fn add_to_e_step(&self, colour: &mut [f32], weight: &mut [f32]) {
+        let c = self.target.channels();
+        let target = self.target.data();
+        for (i, (&m, w)) in self.mask.iter().zip(weight.iter_mut()).enumerate() {
+            let lm = self.lambda * m;
+            if lm > 0.0 {
+                let extra = lm * *w;
+                for k in 0..c {
+                    colour[i * c + k] += extra * target[i * c + k];
+                }
+                *w += extra;
+            }
+        }
+    }
+
+    /// Turns a gathered neighbourhood query (top-left `(x0, y0)`, `size` wide, `dims` values per
+    /// pixel of which the first `channels` are colour) and its weights into the M-step's
+    /// constrained search: query `(x + lm c) / (1 + lm)`, weights `g (1 + lm)`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn apply_to_query(
+        &self,
+        x0: usize,
+        y0: usize,
+        size: usize,
+        dims: usize,
+        wrap: bool,
+        query: &mut [f32],
+        weights: &mut [f32],
+    ) {
+        let (w, h, c) = (
+            self.target.width(),
+            self.target.height(),
+            self.target.channels(),
+        );
+        let target = self.target.data();
+        for dy in 0..size {
+            let y = if wrap { (y0 + dy) % h } else { y0 + dy };
+            for dx in 0..size {
+                let x = if wrap { (x0 + dx) % w } else { x0 + dx };
+                let p = y * w + x;
+                let lm = self.lambda * self.mask[p];
+                if lm > 0.0 {
+                    let base = (dy * size + dx) * dims;
+                    for k in 0..c {
+                        let q = &mut query[base + k];
+                        *q = (*q + lm * target[p * c + k]) / (1.0 + lm);
+                        weights[base + k] *= 1.0 + lm;
+                    }
+                }
+            }
+        }
+    }
+
+    /// Mean squared difference per value between `output` and the target over the masked
+    /// pixels, each weighted by its mask value (the control energy E_c normalised, lambda left
+    /// out so that runs with different lambdas compare). Zero when nothing is masked.
+    #[must_use]
+    pub fn energy(&self, output: &Image) -> f64 {
+        let c = self.target.channels();
+        let (x, t) = (output.data(), self.target.data());
+        let (mut sum, mut mass) = (0.0f64, 0.0f64);
+        for (i, &m) in self.mask.iter().enumerate() {
+            if m > 0.0 {
+                let m = f64::from(m);
+                for k in 0..c {
+                    sum += m * f64::from(x[i * c + k] - t[i * c + k]).powi(2);
+                }
+                mass += m * c as f64;
+            }
+        }
+        if mass > 0.0 { sum / mass } else { 0.0 }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn validation_names_the_problem() {
+        let target = Image::new(4, 4, 3).unwrap();
+        let msg = |r: Result<SoftConstraints>| r.unwrap_err().to_string();
+        assert!(msg(SoftConstraints::new(target.clone(), vec![0.0; 15], 1.0)).contains("mask"));
+        assert!(msg(SoftConstraints::new(target.clone(), vec![2.0; 16], 1.0)).contains("mask"));
+        assert!(
+            msg(SoftConstraints::new(target.clone(), vec![1.0; 16], f32::NAN)).contains("lambda")
+        );
+        let mut bad = target.clone();
+        bad.data_mut()[3] = f32::INFINITY;
+        assert!(msg(SoftConstraints::new(bad, vec![1.0; 16], 1.0)).contains("target"));
+    }
+
+    #[test]
+    fn shrinking_keeps_the_mask_share_and_the_stroke_colour() {
+        // A one-pixel red line at x = 1 of an 8x8 image, shrunk to 2x2 (blocks of 4x4).
+        let target = Image::from_fn(8, 8, 3, |_, _, k| if k == 0 { 1.0 } else { 0.0 }).unwrap();
+        let mask: Vec<f32> = (0..64).map(|i| if i % 8 == 1 { 1.0 } else { 0.0 }).collect();
+        let soft = SoftConstraints::new(target, mask, 2.0).unwrap();
+        let small = soft.at_size(2, 2);
+        assert_eq!(small.mask, vec![0.25, 0.0, 0.25, 0.0]); // 4 of 16 pixels
+        assert_eq!(small.lambda, 2.0);
+        assert_eq!(small.target.pixel(0, 1), &[1.0, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn the_e_step_average_lands_between_texture_and_target() {
+        let target = Image::from_fn(2, 1, 1, |_, _, _| 1.0).unwrap();
+        let constraint = SoftConstraints::new(target, vec![1.0, 0.0], 1.0)
+            .unwrap()
+            .at_size(2, 1);
+        // Texture average 0.2 from weight 4 at both pixels.
+        let (mut colour, mut weight) = (vec![0.8, 0.8], vec![4.0, 4.0]);
+        constraint.add_to_e_step(&mut colour, &mut weight);
+        assert!((colour[0] / weight[0] - 0.6).abs() < 1e-6); // (0.2 + 1 * 1.0) / 2
+        assert!((colour[1] / weight[1] - 0.2).abs() < 1e-6); // free pixel unchanged
+    }
+
+    #[test]
+    fn the_m_step_query_completes_the_square() {
+        // sum g (x - v)^2 + lm g (v - c)^2 = g (1 + lm) (v - q)^2 + const for every v.
+        let target = Image::from_fn(1, 1, 1, |_, _, _| 0.9).unwrap();
+        let constraint = SoftConstraints::new(target, vec![1.0], 3.0)
+            .unwrap()
+            .at_size(1, 1);
+        let (x, g) = (0.1f32, 0.7f32);
+        let (mut query, mut weights) = (vec![x], vec![g]);
+        constraint.apply_to_query(0, 0, 1, 1, false, &mut query, &mut weights);
+        let direct = |v: f32| g * (x - v).powi(2) + 3.0 * g * (v - 0.9).powi(2);
+        let squared = |v: f32| weights[0] * (v - query[0]).powi(2);
+        let offset = direct(0.0) - squared(0.0);
+        for v in [0.2, 0.5, 1.0] {
+            assert!((direct(v) - squared(v) - offset).abs() < 1e-5);
+        }
+    }
+}

@@ -1,0 +1,257 @@
+//! One synthesis level at work: the grid X† of output neighbourhoods, their matches z_p, the
+//! search structure over the exemplar's neighbourhoods, and the E- and M-steps that alternate
+//! on them (Algorithm 1, or Algorithm 2 with a [`Constraint`]). The multi-level session and the
+//! flow-guided animation both drive it.
+
+use super::constraints::Constraint;
+use super::e_step::{Matches, e_step, robust_weight};
+use super::features::{feature_map, gather};
+use super::m_step::Matcher;
+use super::schedule::{grid_axis, nearest_corner};
+use crate::core::sample::resize_bilinear;
+use crate::core::{Edge, Image, Result, Rng};
+use crate::methods::optimization::e_step::edge;
+use crate::solvers::nn::patches::gaussian_falloff;
+use crate::solvers::nn::patchmatch::QueryGrid;
+use crate::solvers::nn::{Pos, Search};
+
+/// The fixed settings of a level.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LevelSetup {
+    pub output_width: usize,
+    pub output_height: usize,
+    /// Neighbourhood width w.
+    pub size: usize,
+    /// Spacing of the grid X†.
+    pub spacing: usize,
+    pub search: Search,
+    /// Robust exponent r of the energy (IRLS).
+    pub r: f32,
+    /// Weight of the gradient energy.
+    pub mu: f32,
+    /// Neighbourhoods wrap around the output's borders.
+    pub wrap: bool,
+}
+
+/// The state of one level between iterations.
+pub struct LevelSolver {
+    setup: LevelSetup,
+    matcher: Matcher,
+    cols: Vec<usize>,
+    rows: Vec<usize>,
+    matches: Vec<Pos>,
+    /// Texture distances ||x_p - z_p||^2 (fall-off weighted) after the last M-step; infinite
+    /// before the first.
+    distances: Vec<f32>,
+    /// The M-step's own objective per node (equal to `distances` without constraints).
+    objective: Vec<f32>,
+    falloff: Vec<f32>,
+    /// The gathered output neighbourhoods x_p, one vector per node.
+    queries: Vec<f32>,
+    /// Constrained queries and their weights (empty until a constraint is used).
+    constrained: Vec<f32>,
+    constrained_weights: Vec<f32>,
+}
+
+impl LevelSolver {
+    /// A level over `exemplar` (this level's resolution of it) with a random match per node.
+    pub fn new(exemplar: &Image, setup: LevelSetup, rng: &mut Rng) -> Self {
+        let matcher = Matcher::new(
+            feature_map(exemplar, setup.mu, Edge::Clamp),
+            setup.size,
+            setup.search,
+            rng,
+        );
+        let cols = grid_axis(setup.output_width, setup.size, setup.spacing, setup.wrap);
+        let rows = grid_axis(setup.output_height, setup.size, setup.spacing, setup.wrap);
+        let (ex_nx, ex_ny) = matcher.space().extent();
+        let nodes = cols.len() * rows.len();
+        let matches = (0..nodes)
+            .map(|_| Pos::new(rng.index(ex_nx), rng.index(ex_ny)))
+            .collect();
+        let len = matcher.space().vector_len();
+        LevelSolver {
+            falloff: gaussian_falloff(setup.size, 1),
+            queries: vec![0.0; nodes * len],
+            distances: vec![f32::INFINITY; nodes],
+            objective: vec![f32::INFINITY; nodes],
+            constrained: Vec::new(),
+            constrained_weights: Vec::new(),
+            setup,
+            matcher,
+            cols,
+            rows,
+            matches,
+        }
+    }
+
+    #[must_use]
+    pub fn setup(&self) -> &LevelSetup {
+        &self.setup
+    }
+
+    /// Column and row corners of the grid X†.
+    #[must_use]
+    pub fn grid(&self) -> (&[usize], &[usize]) {
+        (&self.cols, &self.rows)
+    }
+
+    /// z_p per node, row by row.
+    #[must_use]
+    pub fn matches(&self) -> &[Pos] {
+        &self.matches
+    }
+
+    /// Replaces every node's match from another solver's: the node's centre is mapped by
+    /// `to_old` into `old`'s output coordinates, the old node nearest to it is followed to its
+    /// match, moved by the offset from that node's centre, and scaled by `scale` into this
+    /// level's exemplar (the ratio of exemplar sizes). Used between levels (centres scale) and
+    /// between animation frames (centres move back along the flow).
+    pub fn carry_from(
+        &mut self,
+        old: &LevelSolver,
+        to_old: impl Fn(f64, f64) -> (f64, f64),
+        scale: (f64, f64),
+    ) {
+        let half_old = old.setup.size as f64 / 2.0;
+        let half_new = self.setup.size as f64 / 2.0;
+        let old_nx = old.cols.len();
+        let space = self.matcher.space();
+        let nx = self.cols.len();
+        for (n, m) in self.matches.iter_mut().enumerate() {
+            let (x, y) = (self.cols[n % nx], self.rows[n / nx]);
+            let (cx, cy) = to_old(x as f64 + half_new, y as f64 + half_new);
+            let i = nearest_corner(&old.cols, cx - half_old);
+            let j = nearest_corner(&old.rows, cy - half_old);
+            let z = old.matches[j * old_nx + i];
+            let zx = (f64::from(z.x) + cx - old.cols[i] as f64) * scale.0 - half_new;
+            let zy = (f64::from(z.y) + cy - old.rows[j] as f64) * scale.1 - half_new;
+            *m = space.clamp(zx.round() as i64, zy.round() as i64);
+        }
+        self.distances.fill(f32::INFINITY);
+    }
+
+    /// The M-step: gathers every x_p from `output` and improves its match, under the
+    /// constraint's search (Algorithm 2) when given. Returns how many matches changed.
+    pub fn m_step(
+        &mut self,
+        output: &Image,
+        constraint: Option<&Constraint>,
+        rng: &mut Rng,
+    ) -> usize {
+        let LevelSetup { mu, wrap, size, .. } = self.setup;
+        let map = feature_map(output, mu, edge(wrap));
+        let space = self.matcher.space();
+        let len = space.vector_len();
+        let nx = self.cols.len();
+        for (n, query) in self.queries.chunks_exact_mut(len).enumerate() {
+            gather(&map, self.cols[n % nx], self.rows[n / nx], size, wrap, query);
+        }
+        let grid = QueryGrid {
+            cols: &self.cols,
+            rows: &self.rows,
+        };
+        let Some(constraint) = constraint else {
+            let changed = self.matcher.m_step(
+                &self.queries,
+                None,
+                grid,
+                &mut self.matches,
+                &mut self.distances,
+                rng,
+            );
+            self.objective.copy_from_slice(&self.distances);
+            return changed;
+        };
+        self.constrained.clone_from(&self.queries);
+        self.constrained_weights.clear();
+        for _ in 0..self.matches.len() {
+            self.constrained_weights
+                .extend_from_slice(space.weights());
+        }
+        for (n, (query, weights)) in self
+            .constrained
+            .chunks_exact_mut(len)
+            .zip(self.constrained_weights.chunks_exact_mut(len))
+            .enumerate()
+        {
+            constraint.apply_to_query(
+                self.cols[n % nx],
+                self.rows[n / nx],
+                size,
+                map.dims,
+                wrap,
+                query,
+                weights,
+            );
+        }
+        let changed = self.matcher.m_step(
+            &self.constrained,
+            Some(&self.constrained_weights),
+            grid,
+            &mut self.matches,
+            &mut self.objective,
+            rng,
+        );
+        // The IRLS weights and the reported energy are about the texture term alone.
+        for (n, d) in self.distances.iter_mut().enumerate() {
+            *d = space.distance(
+                &self.queries[n * len..(n + 1) * len],
+                self.matches[n],
+                f32::INFINITY,
+            );
+        }
+        changed
+    }
+
+    /// The E-step: replaces `output` (this level's size) by the minimiser of the IRLS-weighted
+    /// texture energy for the current matches, plus the constraint's term when given.
+    pub fn e_step(&self, exemplar: &Image, output: &mut Image, constraint: Option<&Constraint>) {
+        let r = self.setup.r;
+        // IRLS: weights from the last distances (all 1 before the first M-step).
+        let weights: Vec<f32> = self
+            .distances
+            .iter()
+            .map(|&d| if d.is_finite() { robust_weight(d, r) } else { 1.0 })
+            .collect();
+        let m = Matches {
+            exemplar,
+            cols: &self.cols,
+            rows: &self.rows,
+            matches: &self.matches,
+            node_weights: &weights,
+            falloff: &self.falloff,
+            size: self.setup.size,
+            wrap: self.setup.wrap,
+            mu: self.setup.mu,
+        };
+        e_step(&m, output, constraint);
+    }
+
+    /// The texture energy sum_p d_p^(r/2), normalised by the number of neighbourhoods and the
+    /// pixels in each (so that levels compare, as in the paper's Fig. 3).
+    #[must_use]
+    pub fn energy(&self) -> f64 {
+        let half_r = f64::from(self.setup.r) / 2.0;
+        let total: f64 = self
+            .distances
+            .iter()
+            .map(|&d| f64::from(d).powf(half_r))
+            .sum();
+        total / (self.distances.len() * self.setup.size * self.setup.size) as f64
+    }
+}
+
+/// `output` resized to the level's size when it is not already (coarse to fine up-sampling).
+pub fn fit_output(output: Image, setup: &LevelSetup) -> Result<Image> {
+    if output.width() == setup.output_width && output.height() == setup.output_height {
+        Ok(output)
+    } else {
+        resize_bilinear(
+            &output,
+            setup.output_width,
+            setup.output_height,
+            edge(setup.wrap),
+        )
+    }
+}
