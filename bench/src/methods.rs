@@ -1,0 +1,153 @@
+//! The methods compared, and one timed native run of each of texsynth's own. Each runs with the
+//! library's default options (what a user gets without tuning), only size and seed set.
+
+use std::time::Instant;
+
+use serde_json::{Value, json};
+use texsynth::core::Image;
+use texsynth::methods::{graphcut, optimization};
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// Texture optimization (Kwatra et al. 2005), default PatchMatch search.
+    Optimization,
+    /// Graph-cut textures (Kwatra et al. 2003), one per placement mode.
+    GraphcutRandom,
+    GraphcutEntire,
+    GraphcutSub,
+    /// The texture-synthesis crate (see peer.rs).
+    Peer,
+}
+
+impl Method {
+    /// Canonical order: the table, the contact sheet and the files list methods in this order.
+    pub const ALL: [Method; 5] = [
+        Method::Optimization,
+        Method::GraphcutRandom,
+        Method::GraphcutEntire,
+        Method::GraphcutSub,
+        Method::Peer,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Optimization => "optimization",
+            Method::GraphcutRandom => "graphcut-random",
+            Method::GraphcutEntire => "graphcut-entire",
+            Method::GraphcutSub => "graphcut-sub",
+            Method::Peer => "peer",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Method> {
+        Method::ALL.into_iter().find(|m| m.name() == name)
+    }
+
+    pub fn is_peer(self) -> bool {
+        self == Method::Peer
+    }
+
+    /// How scripts/compare_wasm.mjs builds the same session from the wasm package: the class and
+    /// the options beyond size and seed. None for the peer, which only runs natively. Kept here so
+    /// the native and the wasm runs cannot drift apart.
+    pub fn wasm_session(self) -> Option<Value> {
+        let placement = |p: graphcut::Placement| json!({ "class": "GraphcutTextures", "options": { "placement": p.name() } });
+        match self {
+            Method::Optimization => Some(json!({ "class": "TextureOptimization", "options": {} })),
+            Method::GraphcutRandom => Some(placement(graphcut::Placement::Random)),
+            Method::GraphcutEntire => Some(placement(graphcut::Placement::EntirePatch)),
+            Method::GraphcutSub => Some(placement(graphcut::Placement::SubPatch)),
+            Method::Peer => None,
+        }
+    }
+}
+
+/// One timed synthesis. `steps` is 0 for the peer, whose run is one opaque call.
+pub struct Run {
+    pub total_ms: f64,
+    pub steps: usize,
+    pub max_step_ms: f64,
+    pub output: Image,
+}
+
+/// Runs one of texsynth's methods: the timed part is session construction (validation, pyramids,
+/// planning) plus every step, as a user's loop would run them; fetching the output is not timed.
+pub fn run_ours(
+    method: Method,
+    exemplar: &Image,
+    width: usize,
+    height: usize,
+    seed: u64,
+) -> Result<Run, String> {
+    let err = |e: texsynth::core::Error| e.to_string();
+    match method {
+        Method::Optimization => {
+            let options = optimization::Options {
+                output_width: width,
+                output_height: height,
+                seed,
+                ..optimization::Options::default()
+            };
+            let start = Instant::now();
+            let mut session = optimization::Session::new(exemplar, options).map_err(err)?;
+            let (steps, max_step_ms) = step_all(|| {
+                let e = session.step()?;
+                Ok(e.kind == optimization::EventKind::Done)
+            })?;
+            let total_ms = ms(start);
+            let output = session.output_full_size().map_err(err)?;
+            Ok(Run {
+                total_ms,
+                steps,
+                max_step_ms,
+                output,
+            })
+        }
+        Method::GraphcutRandom | Method::GraphcutEntire | Method::GraphcutSub => {
+            let placement = match method {
+                Method::GraphcutRandom => graphcut::Placement::Random,
+                Method::GraphcutEntire => graphcut::Placement::EntirePatch,
+                _ => graphcut::Placement::SubPatch,
+            };
+            let options = graphcut::Options {
+                output_width: width,
+                output_height: height,
+                seed,
+                placement,
+                ..graphcut::Options::default()
+            };
+            let start = Instant::now();
+            let mut session = graphcut::Session::new(exemplar, options).map_err(err)?;
+            let (steps, max_step_ms) = step_all(|| Ok(session.step()?.done))?;
+            let total_ms = ms(start);
+            let output = session.output().map_err(err)?;
+            Ok(Run {
+                total_ms,
+                steps,
+                max_step_ms,
+                output,
+            })
+        }
+        Method::Peer => unreachable!("the peer runs through peer::run"),
+    }
+}
+
+/// Calls `step` until it reports done; returns the number of steps and the longest one in ms.
+fn step_all(
+    mut step: impl FnMut() -> texsynth::core::Result<bool>,
+) -> Result<(usize, f64), String> {
+    let (mut steps, mut max) = (0, 0.0f64);
+    loop {
+        let t = Instant::now();
+        let done = step().map_err(|e| e.to_string())?;
+        max = max.max(ms(t));
+        steps += 1;
+        if done {
+            return Ok((steps, max));
+        }
+    }
+}
+
+pub fn ms(since: Instant) -> f64 {
+    since.elapsed().as_secs_f64() * 1e3
+}
