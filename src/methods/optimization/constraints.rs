@@ -216,7 +216,12 @@ mod tests {
         assert!(msg(SoftConstraints::new(target.clone(), vec![0.0; 15], 1.0)).contains("mask"));
         assert!(msg(SoftConstraints::new(target.clone(), vec![2.0; 16], 1.0)).contains("mask"));
         assert!(
-            msg(SoftConstraints::new(target.clone(), vec![1.0; 16], f32::NAN)).contains("lambda")
+            msg(SoftConstraints::new(
+                target.clone(),
+                vec![1.0; 16],
+                f32::NAN
+            ))
+            .contains("lambda")
         );
         let mut bad = target.clone();
         bad.data_mut()[3] = f32::INFINITY;
@@ -227,7 +232,9 @@ mod tests {
     fn shrinking_keeps_the_mask_share_and_the_stroke_colour() {
         // A one-pixel red line at x = 1 of an 8x8 image, shrunk to 2x2 (blocks of 4x4).
         let target = Image::from_fn(8, 8, 3, |_, _, k| if k == 0 { 1.0 } else { 0.0 }).unwrap();
-        let mask: Vec<f32> = (0..64).map(|i| if i % 8 == 1 { 1.0 } else { 0.0 }).collect();
+        let mask: Vec<f32> = (0..64)
+            .map(|i| if i % 8 == 1 { 1.0 } else { 0.0 })
+            .collect();
         let soft = SoftConstraints::new(target, mask, 2.0).unwrap();
         let small = soft.at_size(2, 2);
         assert_eq!(small.mask, vec![0.25, 0.0, 0.25, 0.0]); // 4 of 16 pixels

@@ -33,6 +33,14 @@ pub struct LevelSetup {
     pub wrap: bool,
 }
 
+/// A grid and its matches, where carried matches come from.
+struct OldGrid<'a> {
+    cols: &'a [usize],
+    rows: &'a [usize],
+    matches: &'a [Pos],
+    size: usize,
+}
+
 /// The state of one level between iterations.
 pub struct LevelSolver {
     setup: LevelSetup,
@@ -105,30 +113,61 @@ impl LevelSolver {
     /// Replaces every node's match from another solver's: the node's centre is mapped by
     /// `to_old` into `old`'s output coordinates, the old node nearest to it is followed to its
     /// match, moved by the offset from that node's centre, and scaled by `scale` into this
-    /// level's exemplar (the ratio of exemplar sizes). Used between levels (centres scale) and
-    /// between animation frames (centres move back along the flow).
+    /// level's exemplar (the ratio of exemplar sizes). Used between levels (centres scale).
     pub fn carry_from(
         &mut self,
         old: &LevelSolver,
         to_old: impl Fn(f64, f64) -> (f64, f64),
         scale: (f64, f64),
     ) {
-        let half_old = old.setup.size as f64 / 2.0;
+        let old = OldGrid {
+            cols: &old.cols,
+            rows: &old.rows,
+            matches: &old.matches,
+            size: old.setup.size,
+        };
+        let carried = self.carried(&old, to_old, scale);
+        self.matches = carried;
+        self.distances.fill(f32::INFINITY);
+    }
+
+    /// Moves the matches along a motion: each node takes the match found at `to_old` of its
+    /// centre in this same grid (between animation frames: the centre moved back along the flow).
+    pub fn move_along(&mut self, to_old: impl Fn(f64, f64) -> (f64, f64)) {
+        let old = OldGrid {
+            cols: &self.cols,
+            rows: &self.rows,
+            matches: &self.matches,
+            size: self.setup.size,
+        };
+        let carried = self.carried(&old, to_old, (1.0, 1.0));
+        self.matches = carried;
+        self.distances.fill(f32::INFINITY);
+    }
+
+    fn carried(
+        &self,
+        old: &OldGrid<'_>,
+        to_old: impl Fn(f64, f64) -> (f64, f64),
+        scale: (f64, f64),
+    ) -> Vec<Pos> {
+        let half_old = old.size as f64 / 2.0;
         let half_new = self.setup.size as f64 / 2.0;
         let old_nx = old.cols.len();
         let space = self.matcher.space();
         let nx = self.cols.len();
-        for (n, m) in self.matches.iter_mut().enumerate() {
-            let (x, y) = (self.cols[n % nx], self.rows[n / nx]);
-            let (cx, cy) = to_old(x as f64 + half_new, y as f64 + half_new);
-            let i = nearest_corner(&old.cols, cx - half_old);
-            let j = nearest_corner(&old.rows, cy - half_old);
-            let z = old.matches[j * old_nx + i];
-            let zx = (f64::from(z.x) + cx - old.cols[i] as f64) * scale.0 - half_new;
-            let zy = (f64::from(z.y) + cy - old.rows[j] as f64) * scale.1 - half_new;
-            *m = space.clamp(zx.round() as i64, zy.round() as i64);
-        }
-        self.distances.fill(f32::INFINITY);
+        (0..self.matches.len())
+            .map(|n| {
+                let (x, y) = (self.cols[n % nx], self.rows[n / nx]);
+                let (cx, cy) = to_old(x as f64 + half_new, y as f64 + half_new);
+                let i = nearest_corner(old.cols, cx - half_old);
+                let j = nearest_corner(old.rows, cy - half_old);
+                let z = old.matches[j * old_nx + i];
+                let zx = (f64::from(z.x) + cx - old.cols[i] as f64) * scale.0 - half_new;
+                let zy = (f64::from(z.y) + cy - old.rows[j] as f64) * scale.1 - half_new;
+                space.clamp(zx.round() as i64, zy.round() as i64)
+            })
+            .collect()
     }
 
     /// The M-step: gathers every x_p from `output` and improves its match, under the
@@ -145,7 +184,14 @@ impl LevelSolver {
         let len = space.vector_len();
         let nx = self.cols.len();
         for (n, query) in self.queries.chunks_exact_mut(len).enumerate() {
-            gather(&map, self.cols[n % nx], self.rows[n / nx], size, wrap, query);
+            gather(
+                &map,
+                self.cols[n % nx],
+                self.rows[n / nx],
+                size,
+                wrap,
+                query,
+            );
         }
         let grid = QueryGrid {
             cols: &self.cols,
@@ -166,8 +212,7 @@ impl LevelSolver {
         self.constrained.clone_from(&self.queries);
         self.constrained_weights.clear();
         for _ in 0..self.matches.len() {
-            self.constrained_weights
-                .extend_from_slice(space.weights());
+            self.constrained_weights.extend_from_slice(space.weights());
         }
         for (n, (query, weights)) in self
             .constrained
@@ -212,7 +257,13 @@ impl LevelSolver {
         let weights: Vec<f32> = self
             .distances
             .iter()
-            .map(|&d| if d.is_finite() { robust_weight(d, r) } else { 1.0 })
+            .map(|&d| {
+                if d.is_finite() {
+                    robust_weight(d, r)
+                } else {
+                    1.0
+                }
+            })
             .collect();
         let m = Matches {
             exemplar,

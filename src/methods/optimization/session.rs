@@ -186,6 +186,12 @@ impl Session {
         })
     }
 
+    /// The level's solver (grid, matches, search), once a level is entered.
+    #[must_use]
+    pub fn level_solver(&self) -> Option<&LevelSolver> {
+        self.solver.as_ref()
+    }
+
     /// The current output up-sampled to the full output size (coarse levels look blocky-smooth).
     pub fn output_full_size(&self) -> Result<Image> {
         let (w, h) = (self.options.output_width, self.options.output_height);

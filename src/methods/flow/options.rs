@@ -1,0 +1,143 @@
+//! The options of flow-guided texture animation.
+
+use super::field::FlowField;
+use super::generators::FlowSpec;
+use crate::core::{Error, Result};
+use crate::methods::optimization;
+use crate::solvers::nn::Search;
+
+/// Where the flow fields come from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FlowSource {
+    /// A built-in generator (possibly time-varying), evaluated at every frame.
+    Generator(FlowSpec),
+    /// Fields given by the caller: f_1, f_2, ...; a single field is a stationary flow, and a
+    /// shorter list than the animation repeats (so a cycle of fields loops).
+    Fields(Vec<FlowField>),
+}
+
+impl FlowSource {
+    /// The field f_t between frame t and t + 1, for frames of `width` x `height`.
+    pub fn field(&self, width: usize, height: usize, t: usize) -> Result<FlowField> {
+        match self {
+            FlowSource::Generator(spec) => spec.field(width, height, t),
+            FlowSource::Fields(fields) => Ok(fields[t % fields.len()].clone()),
+        }
+    }
+}
+
+/// Everything a flow animation can be told. Validate with [`FlowOptions::validate`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct FlowOptions {
+    /// Frame width and height. Default: 128x128.
+    pub output_width: usize,
+    pub output_height: usize,
+    /// Frames to make, the first included. Default: 60.
+    pub frames: usize,
+    /// Weight of the flow term (eq. 3 as a soft constraint, relative to the texture term at each
+    /// pixel; see `optimization::constraints`). Default: 0.2, chosen on the samples (vortex,
+    /// 50 frames): it keeps the frames' coherence within about 1.3x of the first frame's while
+    /// cutting the flow energy by a third from lambda = 0; lambda = 0.5 follows the flow more
+    /// closely (flow energy halved again) but the constraint's blur lifts coherence to ~1.8x.
+    pub lambda: f32,
+    /// Neighbourhood widths of the per-frame synthesis (one resolution, largest first).
+    /// Default: [16, 8].
+    pub frame_sizes: Vec<usize>,
+    /// Cap on EM iterations per neighbourhood size per frame. Default: 3.
+    pub frame_iterations: usize,
+    /// Seed, search, robust exponent r and wrap-around, shared with the first frame.
+    pub seed: u64,
+    pub search: Search,
+    pub r: f32,
+    pub tileable: bool,
+}
+
+impl Default for FlowOptions {
+    fn default() -> Self {
+        FlowOptions {
+            output_width: 128,
+            output_height: 128,
+            frames: 60,
+            lambda: 0.2,
+            frame_sizes: vec![16, 8],
+            frame_iterations: 3,
+            seed: 1,
+            search: Search::PatchMatch,
+            r: 0.8,
+            tileable: false,
+        }
+    }
+}
+
+/// The longest animation accepted (about an hour at 25 frames per second).
+pub const MAX_FRAMES: usize = 100_000;
+
+impl FlowOptions {
+    /// The options of the first frame, made by plain multi-level texture optimisation.
+    #[must_use]
+    pub fn first_frame(&self) -> optimization::Options {
+        optimization::Options {
+            output_width: self.output_width,
+            output_height: self.output_height,
+            seed: self.seed,
+            search: self.search,
+            r: self.r,
+            tileable: self.tileable,
+            ..optimization::Options::default()
+        }
+    }
+
+    /// Checks every option, the first frame's too; the error names the option.
+    pub fn validate(&self, exemplar_width: usize, exemplar_height: usize) -> Result<()> {
+        let invalid =
+            |name: &'static str, reason: String| Err(Error::InvalidParameter { name, reason });
+        self.first_frame()
+            .validate(exemplar_width, exemplar_height)?;
+        if !(1..=MAX_FRAMES).contains(&self.frames) {
+            return invalid(
+                "frames",
+                format!("must be between 1 and {MAX_FRAMES}, got {}", self.frames),
+            );
+        }
+        if !self.lambda.is_finite()
+            || !(0.0..=optimization::constraints::MAX_LAMBDA).contains(&self.lambda)
+        {
+            return invalid(
+                "lambda",
+                format!(
+                    "must be between 0 and {}, got {}",
+                    optimization::constraints::MAX_LAMBDA,
+                    self.lambda
+                ),
+            );
+        }
+        if self.frame_sizes.is_empty() {
+            return invalid("frameSizes", "must name at least one size".into());
+        }
+        let fits = |s: usize| {
+            (2..=128).contains(&s)
+                && s <= exemplar_width.min(exemplar_height)
+                && s <= self.output_width.min(self.output_height)
+        };
+        if let Some(&bad) = self.frame_sizes.iter().find(|&&s| !fits(s)) {
+            return invalid(
+                "frameSizes",
+                format!(
+                    "each size must be between 2 and 128 and fit the exemplar ({exemplar_width}x{exemplar_height}) and the frame ({}x{}), got {bad}",
+                    self.output_width, self.output_height
+                ),
+            );
+        }
+        if !(1..=optimization::options::MAX_ITERATIONS).contains(&self.frame_iterations) {
+            return invalid(
+                "frameIterations",
+                format!(
+                    "must be between 1 and {}, got {}",
+                    optimization::options::MAX_ITERATIONS,
+                    self.frame_iterations
+                ),
+            );
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,351 @@
+//! Flow-guided texture animation (Kwatra et al. 2005, section 4.1): the first frame by plain
+//! texture optimisation, then frame by frame: warp the previous frame along the flow, use it both
+//! as the start and as the soft-constraint target of eq. 3, and synthesise at one resolution with
+//! Algorithm 2, the matches moved along the flow from the previous frame's.
+
+use super::field::FlowField;
+use super::options::{FlowOptions, FlowSource};
+use super::warp::warp;
+use crate::core::{Edge, Error, Image, Result, Rng};
+use crate::methods::optimization::constraints::Constraint;
+use crate::methods::optimization::level::{LevelSetup, LevelSolver};
+use crate::methods::optimization::{self, EventKind};
+
+/// What a step did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FlowEventKind {
+    /// An EM iteration within a frame.
+    Iteration,
+    /// The iteration that finished a frame: render it now to keep it.
+    Frame,
+    /// The last frame is finished.
+    Done,
+}
+
+/// The report of one step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FlowEvent {
+    pub kind: FlowEventKind,
+    /// The frame worked on, 0-based.
+    pub frame: usize,
+    /// Iteration within the frame, 1-based.
+    pub iteration: usize,
+    /// Neighbourhood width of this iteration.
+    pub size: usize,
+    /// Texture energy of this iteration (normalised as in the optimisation session).
+    pub texture_energy: f64,
+    /// Flow energy: mean squared difference per value between the frame and the previous frame
+    /// carried along the flow, over the pixels whose source lies inside (0 for the first frame).
+    pub flow_energy: f64,
+    /// Matches that changed in this iteration's M-step.
+    pub changed: usize,
+    pub total_iterations: usize,
+}
+
+/// The energies a finished frame ended with.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrameEnergy {
+    pub texture: f64,
+    pub flow: f64,
+}
+
+/// A running flow animation.
+pub struct FlowSession {
+    options: FlowOptions,
+    flow: FlowSource,
+    exemplar: Image,
+    /// The synthesis of frame 0, while it runs.
+    first: Option<optimization::Session>,
+    /// One level per frame neighbourhood size, largest first; they live across frames so that
+    /// matches carry along the flow.
+    solvers: Vec<LevelSolver>,
+    rng: Rng,
+    frame: usize,
+    size_index: usize,
+    iteration: usize,
+    /// Whether the current frame's warp and constraint are set up.
+    begun: bool,
+    /// True until the first M-step of a (frame, size) ran on the warped start.
+    fresh: bool,
+    /// The frame being made (or the last one made).
+    current: Option<Image>,
+    /// The last finished frame.
+    previous: Option<Image>,
+    /// The previous frame warped along the flow, with its mask: eq. 3 as a soft constraint.
+    constraint: Option<Constraint>,
+    /// The naive baseline of Fig. 7: frame 0 warped along the flow, frame after frame.
+    naive: Option<Image>,
+    field: Option<FlowField>,
+    history: Vec<FrameEnergy>,
+    total_iterations: usize,
+    last: Option<FlowEvent>,
+}
+
+impl FlowSession {
+    /// Validates the options, the exemplar and the flow fields' sizes.
+    pub fn new(exemplar: &Image, flow: FlowSource, options: FlowOptions) -> Result<Self> {
+        options.validate(exemplar.width(), exemplar.height())?;
+        if let FlowSource::Fields(fields) = &flow {
+            if fields.is_empty() {
+                return Err(Error::InvalidParameter {
+                    name: "flow",
+                    reason: "needs at least one field".into(),
+                });
+            }
+            let (w, h) = (options.output_width, options.output_height);
+            if let Some(f) = fields.iter().find(|f| (f.width(), f.height()) != (w, h)) {
+                return Err(Error::InvalidSize {
+                    what: "flow field",
+                    width: f.width(),
+                    height: f.height(),
+                    reason: format!("must match the frame size {w}x{h}"),
+                });
+            }
+        }
+        let first = optimization::Session::new(exemplar, options.first_frame())?;
+        let mut sizes = options.frame_sizes.clone();
+        sizes.sort_unstable_by(|a, b| b.cmp(a));
+        sizes.dedup();
+        let mut rng = Rng::new(options.seed ^ 0x5eed_f10e);
+        let solvers = sizes
+            .iter()
+            .map(|&size| {
+                let setup = LevelSetup {
+                    output_width: options.output_width,
+                    output_height: options.output_height,
+                    size,
+                    spacing: (size / 4).max(1),
+                    search: options.search,
+                    r: options.r,
+                    mu: 0.0,
+                    wrap: options.tileable,
+                };
+                LevelSolver::new(exemplar, setup, &mut rng)
+            })
+            .collect();
+        Ok(FlowSession {
+            exemplar: exemplar.clone(),
+            first: Some(first),
+            solvers,
+            rng,
+            flow,
+            options,
+            frame: 0,
+            size_index: 0,
+            iteration: 0,
+            begun: false,
+            fresh: false,
+            current: None,
+            previous: None,
+            constraint: None,
+            naive: None,
+            field: None,
+            history: Vec::new(),
+            total_iterations: 0,
+            last: None,
+        })
+    }
+
+    #[must_use]
+    pub fn options(&self) -> &FlowOptions {
+        &self.options
+    }
+
+    #[must_use]
+    pub fn is_done(&self) -> bool {
+        self.frame >= self.options.frames
+    }
+
+    /// The frame being made, at full size (before the first frame is finished, the first
+    /// synthesis's current state up-sampled).
+    pub fn frame_image(&self) -> Result<Image> {
+        match (&self.current, &self.first) {
+            (Some(img), _) => Ok(img.clone()),
+            (None, Some(first)) => first.output_full_size(),
+            (None, None) => unreachable!("the first synthesis runs until a frame exists"),
+        }
+    }
+
+    /// The naive warp of frame 0 to the current frame (frame 0 itself until it is finished).
+    pub fn naive_image(&self) -> Result<Image> {
+        match &self.naive {
+            Some(img) => Ok(img.clone()),
+            None => self.frame_image(),
+        }
+    }
+
+    /// The field that carried the previous frame into the current one (None for frame 0).
+    #[must_use]
+    pub fn current_field(&self) -> Option<&FlowField> {
+        self.field.as_ref()
+    }
+
+    /// The field f_t of this animation's flow.
+    pub fn field_at(&self, t: usize) -> Result<FlowField> {
+        self.flow
+            .field(self.options.output_width, self.options.output_height, t)
+    }
+
+    /// The energies of the finished frames, in order.
+    #[must_use]
+    pub fn history(&self) -> &[FrameEnergy] {
+        &self.history
+    }
+
+    /// Index of the frame being made (the number of finished frames).
+    #[must_use]
+    pub fn frame(&self) -> usize {
+        self.frame
+    }
+
+    /// Runs one EM iteration and reports it.
+    pub fn step(&mut self) -> Result<FlowEvent> {
+        if self.is_done() {
+            let mut last = self.last.expect("a finished animation has stepped");
+            last.kind = FlowEventKind::Done;
+            return Ok(last);
+        }
+        let event = if self.first.is_some() {
+            self.step_first()?
+        } else {
+            self.step_frame()?
+        };
+        self.total_iterations += 1;
+        let event = FlowEvent {
+            total_iterations: self.total_iterations,
+            kind: if event.kind == FlowEventKind::Frame && self.is_done() {
+                FlowEventKind::Done
+            } else {
+                event.kind
+            },
+            ..event
+        };
+        self.last = Some(event);
+        Ok(event)
+    }
+
+    /// One iteration of frame 0's multi-level synthesis.
+    fn step_first(&mut self) -> Result<FlowEvent> {
+        let first = self.first.as_mut().expect("frame 0 is running");
+        let e = first.step()?;
+        let mut event = FlowEvent {
+            kind: FlowEventKind::Iteration,
+            frame: 0,
+            iteration: e.total_iterations,
+            size: e.size,
+            texture_energy: e.energy,
+            flow_energy: 0.0,
+            changed: e.changed,
+            total_iterations: 0,
+        };
+        if e.kind == EventKind::Done {
+            let frame = first.output_full_size()?;
+            // The frame levels start from the finest level's matches.
+            if let Some(last) = first.level_solver() {
+                for solver in &mut self.solvers {
+                    solver.carry_from(last, |x, y| (x, y), (1.0, 1.0));
+                }
+            }
+            self.first = None;
+            self.finish_frame(frame, e.energy, 0.0);
+            event.kind = FlowEventKind::Frame;
+        }
+        Ok(event)
+    }
+
+    /// Stores a finished frame and moves on to the next.
+    fn finish_frame(&mut self, frame: Image, texture: f64, flow: f64) {
+        if self.naive.is_none() {
+            self.naive = Some(frame.clone());
+        }
+        self.history.push(FrameEnergy { texture, flow });
+        self.current = Some(frame.clone());
+        self.previous = Some(frame);
+        self.frame += 1;
+        self.size_index = 0;
+        self.iteration = 0;
+        self.begun = false;
+    }
+
+    /// Warps the previous frame (and the naive baseline) along f_{t-1}, sets the constraint and
+    /// moves every level's matches along the flow.
+    fn begin_frame(&mut self) -> Result<()> {
+        let field = self.field_at(self.frame - 1)?;
+        let edge = if self.options.tileable {
+            Edge::Wrap
+        } else {
+            Edge::Clamp
+        };
+        let previous = self.previous.as_ref().expect("a frame is finished");
+        let warped = warp(previous, &field, edge)?;
+        let naive = self.naive.as_ref().expect("frame 0 is the naive start");
+        self.naive = Some(warp(naive, &field, edge)?.image);
+        let (w, h) = (
+            self.options.output_width as f64,
+            self.options.output_height as f64,
+        );
+        let wrap = self.options.tileable;
+        for solver in &mut self.solvers {
+            // A node's content came from its centre moved back along the flow.
+            solver.move_along(|cx, cy| {
+                let (vx, vy) = field.near(cx - 0.5, cy - 0.5);
+                let (x, y) = (cx - f64::from(vx), cy - f64::from(vy));
+                if wrap {
+                    (x.rem_euclid(w), y.rem_euclid(h))
+                } else {
+                    (x, y)
+                }
+            });
+        }
+        self.current = Some(warped.image.clone());
+        self.constraint = Some(Constraint {
+            target: warped.image,
+            mask: warped.inside,
+            lambda: self.options.lambda,
+        });
+        self.field = Some(field);
+        self.begun = true;
+        self.fresh = true;
+        Ok(())
+    }
+
+    /// One iteration of Algorithm 2 on the current frame at the current neighbourhood size.
+    fn step_frame(&mut self) -> Result<FlowEvent> {
+        if !self.begun {
+            self.begin_frame()?;
+        }
+        let constraint = self.constraint.as_ref();
+        let solver = &mut self.solvers[self.size_index];
+        let output = self.current.as_mut().expect("frame begun");
+        if self.fresh {
+            solver.m_step(output, constraint, &mut self.rng);
+            self.fresh = false;
+        }
+        solver.e_step(&self.exemplar, output, constraint);
+        let changed = solver.m_step(output, constraint, &mut self.rng);
+        self.iteration += 1;
+        let texture_energy = solver.energy();
+        let flow_energy = constraint.map_or(0.0, |c| c.energy(output));
+        let mut event = FlowEvent {
+            kind: FlowEventKind::Iteration,
+            frame: self.frame,
+            iteration: self.size_index * self.options.frame_iterations + self.iteration,
+            size: solver.setup().size,
+            texture_energy,
+            flow_energy,
+            changed,
+            total_iterations: 0,
+        };
+        if changed == 0 || self.iteration >= self.options.frame_iterations {
+            self.size_index += 1;
+            self.iteration = 0;
+            self.fresh = true;
+            if self.size_index == self.solvers.len() {
+                let frame = self.current.clone().expect("frame made");
+                self.finish_frame(frame, texture_energy, flow_energy);
+                event.kind = FlowEventKind::Frame;
+            }
+        }
+        Ok(event)
+    }
+}
