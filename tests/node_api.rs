@@ -12,3 +12,6 @@ mod optimization_cases;
 
 #[path = "common/graphcut_cases.rs"]
 mod graphcut_cases;
+
+#[path = "common/flow_cases.rs"]
+mod flow_cases;

@@ -3,6 +3,7 @@
 
 mod error;
 mod exemplar;
+mod flow;
 mod graphcut;
 mod merge;
 mod optimization;
@@ -11,6 +12,7 @@ mod pixels;
 mod quality;
 
 pub use exemplar::Exemplar;
+pub use flow::{FlowAnimation, flow_field};
 pub use graphcut::GraphcutTextures;
 pub use merge::GraphcutMerge;
 pub use optimization::TextureOptimization;

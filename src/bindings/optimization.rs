@@ -9,7 +9,8 @@ use super::error::JsResult;
 use super::exemplar::Exemplar;
 use super::options::{OptionsReader, object};
 use super::pixels::render_into;
-use crate::core::Error;
+use crate::core::{Error, from_rgba8};
+use crate::methods::optimization::SoftConstraints;
 use crate::methods::optimization::teaching::offset_map;
 use crate::methods::optimization::{Event, EventKind, Options, Session};
 use crate::solvers::nn::Search;
@@ -137,6 +138,47 @@ impl TextureOptimization {
     #[wasm_bindgen(js_name = renderInto)]
     pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
         render_into(&self.session.output_full_size()?, target)
+    }
+
+    /// Soft constraints (Kwatra et al. 2005, section 4): `rgba` is `outputWidth * outputHeight *
+    /// 4` bytes of desired colours whose alpha is the mask (0 = free, 255 = fully constrained),
+    /// e.g. the `data` of a canvas the user painted on; `lambda` (0 to 1e6) is the weight,
+    /// relative to the texture at each pixel (1 = half way, large = hard). Applies from the next
+    /// step; on a finished run it reopens the finest level so the output follows the strokes.
+    #[wasm_bindgen(js_name = setConstraints)]
+    pub fn set_constraints(&mut self, rgba: &[u8], lambda: f64) -> JsResult<()> {
+        let (w, h) = (self.width() as usize, self.height() as usize);
+        if rgba.len() != w * h * 4 {
+            return Err(Error::LengthMismatch {
+                what: "constraint pixels (RGBA, output size)",
+                expected: w * h * 4,
+                actual: rgba.len(),
+            }
+            .into());
+        }
+        let painted = from_rgba8(w, h, rgba)?;
+        let mask: Vec<f32> = rgba
+            .chunks_exact(4)
+            .map(|p| f32::from(p[3]) / 255.0)
+            .collect();
+        let channels = self.session.exemplar_channels();
+        let target = painted.with_channels(4)?.with_channels(channels)?;
+        let constraints = SoftConstraints::new(target, mask, lambda as f32)?;
+        self.session.set_constraints(Some(constraints))?;
+        Ok(())
+    }
+
+    /// Removes the soft constraints.
+    #[wasm_bindgen(js_name = clearConstraints)]
+    pub fn clear_constraints(&mut self) -> JsResult<()> {
+        Ok(self.session.set_constraints(None)?)
+    }
+
+    /// Mean squared difference per value between the output and the constraint colours over the
+    /// masked pixels (0 without constraints).
+    #[wasm_bindgen(getter, js_name = constraintEnergy)]
+    pub fn constraint_energy(&self) -> f64 {
+        self.session.constraint_energy()
     }
 
     /// Writes the colour-coded offset map (which exemplar position each pixel comes from: red =

@@ -47,6 +47,11 @@ impl OptionsReader {
         })
     }
 
+    /// The raw value of `name`, for options that are objects or typed arrays.
+    pub fn value(&self, name: &str) -> Option<JsValue> {
+        self.get(name)
+    }
+
     fn get(&self, name: &str) -> Option<JsValue> {
         let v = Reflect::get(&self.object, &name.into()).ok()?;
         (!v.is_undefined() && !v.is_null()).then_some(v)

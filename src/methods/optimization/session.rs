@@ -133,6 +133,12 @@ impl Session {
         Ok(())
     }
 
+    /// Channels of the exemplar (and of the output and of constraint targets).
+    #[must_use]
+    pub fn exemplar_channels(&self) -> usize {
+        self.exemplars[0].channels()
+    }
+
     #[must_use]
     pub fn constraints(&self) -> Option<&SoftConstraints> {
         self.constraints.as_ref()
