@@ -5,11 +5,12 @@ import init, { version } from './pkg/texsynth.js';
 import { drawInto } from './lib/canvas.js';
 import { setupInput } from './lib/input.js';
 import { Runner } from './lib/runner.js';
+import * as flow from './panels/flow.js';
 import * as graphcut from './panels/graphcut.js';
 import * as merge from './panels/merge.js';
 import * as optimization from './panels/optimization.js';
 
-const PANELS = [optimization, graphcut, merge];
+const PANELS = [optimization, graphcut, merge, flow];
 const $ = (id) => document.getElementById(id);
 
 function showError(message) {
@@ -36,6 +37,12 @@ const ui = {
   outputWidth: () => clampInt($('out-width').value, 16, 2048, 256),
   outputHeight: () => clampInt($('out-height').value, 16, 2048, 256),
   seed: () => clampInt($('seed').value, 0, 2 ** 32, 1),
+  /** Runs the current session on (a panel calls it when new input should be followed). */
+  run: () => {
+    if (!state.exemplar || !state.runner) return;
+    state.runner.run();
+    setStatus('running…');
+  },
 };
 
 function setStatus(text) {

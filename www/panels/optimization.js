@@ -1,6 +1,7 @@
 // The "Texture optimization" panel (Kwatra et al. 2005): every EM iteration is drawn as it
 // happens, with the energy plot of the paper's Fig. 3 and a teaching view of the neighbourhood
-// grid and the chosen exemplar positions.
+// grid and the chosen exemplar positions. With "paint constraints" on, colour strokes painted on
+// the output become soft constraints (section 4) and the synthesis runs on to follow them.
 import { TextureOptimization } from '../pkg/texsynth.js';
 import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
@@ -19,7 +20,13 @@ const OPTIONS_HTML = `
   <label title="weight of the gradient energy; 0 is off, the paper uses 10">μ <input id="to-mu" type="number" value="0" min="0" max="100" step="1"></label>
   <label title="EM iterations per level at most">iterations <input id="to-iterations" type="number" value="5" min="1" max="20" step="1"></label>
   <label><input id="to-tileable" type="checkbox"> tileable</label>
-  <label><input id="to-teaching" class="view" type="checkbox"> teaching view</label>`;
+  <label><input id="to-teaching" class="view" type="checkbox"> teaching view</label>
+  <span class="views" title="soft constraints (section 4): paint colours on the output and the synthesis follows them">
+    <label><input id="to-paint" class="view" type="checkbox"> paint constraints</label>
+    <input id="to-colour" class="view" type="color" value="#c83c28" aria-label="paint colour">
+    <label>λ <input id="to-lambda" class="view" type="number" value="2" min="0" max="1000" step="0.5"></label>
+    <button id="to-clear-paint" type="button" class="view">Clear paint</button>
+  </span>`;
 
 const SIDE_HTML = `
   <div class="readout" id="to-readout">press Run or Step</div>
@@ -31,6 +38,9 @@ const SIDE_HTML = `
 export function createPanel(ui) {
   let session = null;
   let offsetImage = null;
+  // The painted constraints: colours with alpha as the mask, at output size.
+  let paint = null;
+  let painting = false;
 
   function options() {
     return {
@@ -78,6 +88,51 @@ export function createPanel(ui) {
     }
   }
 
+  function paintLayer() {
+    const [w, h] = [ui.outputWidth(), ui.outputHeight()];
+    if (!paint || paint.width !== w || paint.height !== h) {
+      paint = document.createElement('canvas');
+      paint.width = w;
+      paint.height = h;
+    }
+    return paint;
+  }
+
+  /** A soft round brush stroke at the pointer, in output pixels. */
+  function paintAt(event) {
+    if (!ui.$('to-paint').checked || !session) return;
+    const layer = paintLayer();
+    const rect = ui.outputCanvas.getBoundingClientRect();
+    const x = ((event.clientX - rect.left) / rect.width) * layer.width;
+    const y = ((event.clientY - rect.top) / rect.height) * layer.height;
+    const radius = Math.max(3, layer.width / 40);
+    const ctx = layer.getContext('2d');
+    const gradient = ctx.createRadialGradient(x, y, 0, x, y, radius);
+    const colour = ui.$('to-colour').value;
+    gradient.addColorStop(0, colour);
+    gradient.addColorStop(0.6, colour);
+    gradient.addColorStop(1, `${colour}00`);
+    ctx.fillStyle = gradient;
+    ctx.beginPath();
+    ctx.arc(x, y, radius, 0, 2 * Math.PI);
+    ctx.fill();
+    // Show the stroke over the output while painting.
+    const view = ui.outputCanvas.getContext('2d');
+    view.save();
+    view.globalAlpha = 0.6;
+    view.drawImage(layer, 0, 0, ui.outputCanvas.width, ui.outputCanvas.height);
+    view.restore();
+  }
+
+  /** Hands the painted colours to the session and lets the synthesis follow them. */
+  function applyPaint() {
+    if (!session || !paint) return;
+    const data = paint.getContext('2d').getImageData(0, 0, paint.width, paint.height).data;
+    session.setConstraints(new Uint8Array(data.buffer), Number(ui.$('to-lambda').value));
+    document.body.dataset.constraintsSet = String(Number(document.body.dataset.constraintsSet ?? 0) + 1);
+    ui.run();
+  }
+
   function plot() {
     const values = Array.from(session.energyHistory());
     const levels = session.historyLevels();
@@ -99,6 +154,33 @@ export function createPanel(ui) {
     sideHtml: SIDE_HTML,
     mount() {
       ui.$('to-teaching').addEventListener('change', draw);
+      const canvas = ui.outputCanvas;
+      canvas.onpointerdown = (e) => {
+        painting = ui.$('to-paint').checked && !!session;
+        paintAt(e);
+      };
+      canvas.onpointermove = (e) => painting && paintAt(e);
+      this.onPointerUp = () => {
+        if (!painting) return;
+        painting = false;
+        try {
+          applyPaint();
+        } catch (error) {
+          ui.$('to-readout').textContent = error.message;
+        }
+      };
+      window.addEventListener('pointerup', this.onPointerUp);
+      ui.$('to-clear-paint').addEventListener('click', () => {
+        paint = null;
+        if (session?.constraintEnergy !== undefined) {
+          session.clearConstraints();
+          draw();
+        }
+      });
+    },
+    unmount() {
+      ui.outputCanvas.onpointerdown = ui.outputCanvas.onpointermove = null;
+      window.removeEventListener('pointerup', this.onPointerUp);
     },
     step() {
       return ensureSession().done ? null : session.step();
@@ -106,10 +188,11 @@ export function createPanel(ui) {
     onStep(event) {
       draw();
       plot();
+      const constraint = paint ? ` · constraint error ${session.constraintEnergy.toPrecision(3)}` : '';
       ui.$('to-readout').textContent =
         `level ${event.level + 1}/${event.levelCount} · resolution 1/${event.scale} · ` +
         `neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration} · ` +
-        `energy ${event.energy.toPrecision(4)} · ${event.changed} matches changed`;
+        `energy ${event.energy.toPrecision(4)} · ${event.changed} matches changed${constraint}`;
       document.body.dataset.iterations = String(event.totalIterations);
       if (event.done) {
         showQuality(ui.$('to-quality'), ui.exemplar(), session);
@@ -119,6 +202,7 @@ export function createPanel(ui) {
     reset() {
       session?.free();
       session = null;
+      paint = null;
       delete document.body.dataset.optimizationDone;
       document.body.dataset.iterations = '0';
       ui.$('to-readout').textContent = 'press Run or Step';

@@ -55,7 +55,9 @@ fn coherence_along_a_vortex() {
         frame_sizes: std::env::var("FLOW_SIZES").map_or(vec![16, 8], |s| {
             s.split(',').map(|v| v.parse().unwrap()).collect()
         }),
-        ..options(50)
+        output_width: env("FLOW_SIZE", 64.0) as usize,
+        output_height: env("FLOW_SIZE", 64.0) as usize,
+        ..options(env("FLOW_FRAMES", 50.0) as usize)
     };
     let (frames, naive, events) = animate(&exemplar, vortex(env("FLOW_STRENGTH", 2.0)), opts);
     let flow: f64 = events
@@ -66,7 +68,7 @@ fn coherence_along_a_vortex() {
         / 49.0;
     println!("mean flow energy {flow:.5}");
     let c0 = quality(&exemplar, &frames[0]).unwrap().coherence;
-    for (i, f) in frames.iter().enumerate().step_by(7) {
+    for (i, f) in frames.iter().enumerate().step_by(8) {
         println!(
             "frame {i}: {:.3}",
             quality(&exemplar, f).unwrap().coherence / c0
@@ -77,13 +79,13 @@ fn coherence_along_a_vortex() {
         quality(&exemplar, &naive).unwrap().coherence / c0
     );
     if let Ok(dir) = std::env::var("FLOW_WRITE") {
-        // A strip: frames 0, 1, 2, 7, 49 and the naive warp.
+        // A strip: frames 0, 1, 2, 7, the last and the naive warp.
         let picks = [
             &frames[0],
             &frames[1],
             &frames[2],
             &frames[7],
-            &frames[49],
+            frames.last().unwrap(),
             &naive,
         ];
         let (w, h) = (frames[0].width(), frames[0].height());

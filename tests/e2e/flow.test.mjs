@@ -1,0 +1,95 @@
+// The "Flow animation" panel in headless Chromium: frames are made and played, the naive warp is
+// drawn beside them, the flow's arrows are drawn, and "Record WebM" produces a video. Then the
+// soft-constraint demo: paint on a finished texture optimisation and the synthesis follows.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { openDemo, RESULTS } from './harness.mjs';
+
+let demo;
+before(async () => {
+  demo = await openDemo();
+});
+after(async () => demo?.close());
+
+const canvasPixels = (page, id) =>
+  page.evaluate((id) => {
+    const c = document.getElementById(id);
+    return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
+  }, id);
+
+test('the flow panel animates, compares with the naive warp and records a WebM', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-panel="flow"]');
+  await page.click('button[data-sample="grass_64"]');
+  await page.waitForSelector('body[data-exemplar="grass 64×64"]');
+  await page.fill('#out-width', '96');
+  await page.fill('#out-height', '96');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.fill('#fl-frames', '10');
+  await page.dispatchEvent('#fl-frames', 'change');
+  await page.selectOption('#fl-flow', 'whirlpool');
+  assert.ok(new Set(await canvasPixels(page, 'fl-arrows')).size > 4, 'the flow is drawn as arrows');
+
+  await page.click('#run');
+  await page.waitForSelector('body[data-flow-done="true"]', { timeout: 120_000 });
+  assert.equal(await page.getAttribute('body', 'data-flow-frames'), '10');
+  assert.match(await page.textContent('#fl-readout'), /frame 10\/10 .* flow energy/);
+  const frame = await canvasPixels(page, 'output-canvas');
+  const naive = await canvasPixels(page, 'fl-naive');
+  assert.equal(naive.length, 96 * 96 * 4);
+  assert.notDeepEqual(frame, naive, 'the naive warp differs from the synthesis');
+  assert.ok(new Set(await canvasPixels(page, 'fl-playback')).size > 50, 'finished frames play');
+
+  await page.click('#fl-record');
+  await page.waitForSelector('body[data-recorded-bytes]', { timeout: 60_000 });
+  const bytes = Number(await page.getAttribute('body', 'data-recorded-bytes'));
+  assert.ok(bytes > 1000, `the WebM has ${bytes} bytes`);
+  assert.equal(await page.getAttribute('body', 'data-recorded-type'), 'video/webm');
+  assert.ok(await page.isVisible('#fl-download'));
+  await page.screenshot({ path: `${RESULTS}/flow.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});
+
+test('painting on a finished texture optimisation pulls it toward the paint', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-panel="optimization"]');
+  await page.click('button[data-sample="tiles_64"]');
+  await page.waitForSelector('body[data-exemplar="tiles 64×64"]');
+  await page.fill('#out-width', '96');
+  await page.fill('#out-height', '96');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.click('#run');
+  await page.waitForSelector('body[data-optimization-done="true"]', { timeout: 60_000 });
+  const redness = async () => {
+    const px = await canvasPixels(page, 'output-canvas');
+    // Mean of (red - green) over the middle band that the stroke covers.
+    let sum = 0;
+    let n = 0;
+    for (let y = 40; y < 56; y++) {
+      for (let x = 20; x < 76; x++) {
+        const i = (y * 96 + x) * 4;
+        sum += px[i] - px[i + 1];
+        n++;
+      }
+    }
+    return sum / n;
+  };
+  const before = await redness();
+  await page.check('#to-paint');
+  await page.fill('#to-colour', '#ff0000');
+  const box = await page.locator('#output-canvas').boundingBox();
+  const at = (fx, fy) => [box.x + fx * box.width, box.y + fy * box.height];
+  await page.mouse.move(...at(0.15, 0.5));
+  await page.mouse.down();
+  for (let fx = 0.15; fx <= 0.85; fx += 0.02) await page.mouse.move(...at(fx, 0.5));
+  for (let fx = 0.85; fx >= 0.15; fx -= 0.02) await page.mouse.move(...at(fx, 0.46));
+  for (let fx = 0.15; fx <= 0.85; fx += 0.02) await page.mouse.move(...at(fx, 0.54));
+  await page.mouse.up();
+  await page.waitForSelector('body[data-constraints-set="1"]');
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'done', null, { timeout: 60_000 });
+  const after = await redness();
+  assert.ok(after > before + 30, `red minus green in the painted band: ${before.toFixed(1)} -> ${after.toFixed(1)}`);
+  assert.match(await page.textContent('#to-readout'), /constraint error/);
+  await page.screenshot({ path: `${RESULTS}/constraints.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});

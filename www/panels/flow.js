@@ -1,0 +1,236 @@
+// The "Flow animation" panel (Kwatra et al. 2005, section 4.1): the texture is synthesised frame
+// after frame so that it moves along a flow field. The main canvas shows each EM iteration of the
+// frame being made; the side shows the finished frames playing in a loop, the naive warp of the
+// first frame for comparison (the paper's Fig. 7), the flow as arrows, and the per-frame
+// energies. "Record WebM" plays the finished frames through the browser's MediaRecorder.
+import { FlowAnimation, flowField } from '../pkg/texsynth.js';
+import { drawInto } from '../lib/canvas.js';
+import { drawLinePlot } from '../lib/plot.js';
+import { recordFrames } from '../lib/record.js';
+
+export const id = 'flow';
+export const title = 'Flow animation';
+
+/** The flows offered, by name; `s` is the strength picked on the page (pixels per frame). */
+const FLOWS = {
+  vortex: (s) => ({ type: 'vortex', strength: s }),
+  sink: (s) => ({ type: 'sink', strength: s / 2 }),
+  source: (s) => ({ type: 'source', strength: s / 2 }),
+  shear: (s) => ({ type: 'shear', strength: s }),
+  translation: (s) => ({ type: 'translation', strength: s, angle: 30 }),
+  whirlpool: (s) => ({ components: [{ type: 'vortex', strength: s }, { type: 'sink', strength: s / 3 }] }),
+  circling: (s) => ({ type: 'translation', strength: s, turn: 6 }),
+  'pulsing vortex': (s) => ({ type: 'vortex', strength: s, period: 40 }),
+};
+
+const PLAYBACK_FPS = 12;
+/** Finished frames kept for playback and recording (about 4 MB each at 1024x1024). */
+const MAX_KEPT_FRAMES = 600;
+
+const OPTIONS_HTML = `
+  <label>Flow <select id="fl-flow">
+    ${Object.keys(FLOWS).map((name) => `<option value="${name}">${name}</option>`).join('')}
+  </select></label>
+  <label title="pixels per frame at half the frame's shorter side">strength <input id="fl-strength" type="number" value="2" min="0" max="16" step="0.5"></label>
+  <label title="weight of the flow term: higher follows the flow more closely, lower keeps the texture sharper">λ <input id="fl-lambda" type="number" value="0.2" min="0" max="100" step="0.05"></label>
+  <label>frames <input id="fl-frames" type="number" value="60" min="2" max="600" step="1"></label>
+  <button id="fl-record" type="button" class="view">Record WebM</button>
+  <a id="fl-download" hidden download="texsynth-flow.webm">download video</a>`;
+
+const SIDE_HTML = `
+  <div class="readout" id="fl-readout">press Run or Step (frames of 128×128 run live; 256×256 at a few per second)</div>
+  <div class="side-row">
+    <figure><canvas id="fl-playback" width="128" height="128" aria-label="Finished frames, playing"></canvas>
+      <figcaption>finished frames, looping</figcaption></figure>
+    <figure><canvas id="fl-naive" width="128" height="128" aria-label="Naive warp"></canvas>
+      <figcaption>naive warp (no synthesis)</figcaption></figure>
+  </div>
+  <figure><canvas id="fl-arrows" width="140" height="140" aria-label="Flow field"></canvas>
+    <figcaption id="fl-arrows-caption">the flow</figcaption></figure>
+  <canvas id="fl-texture" class="plot" width="296" height="110" aria-label="Texture energy per frame"></canvas>
+  <canvas id="fl-flow-energy" class="plot" width="296" height="110" aria-label="Flow energy per frame"></canvas>`;
+
+/** Creates the panel. `ui` gives the shared controls, canvas and exemplar. */
+export function createPanel(ui) {
+  let session = null;
+  let frames = [];
+  let playTimer = null;
+  let playIndex = 0;
+  let recording = false;
+
+  const spec = () => FLOWS[ui.$('fl-flow').value](Number(ui.$('fl-strength').value));
+
+  function options() {
+    return {
+      outputWidth: ui.outputWidth(),
+      outputHeight: ui.outputHeight(),
+      seed: ui.seed(),
+      lambda: Number(ui.$('fl-lambda').value),
+      frames: Number(ui.$('fl-frames').value),
+      flow: spec(),
+    };
+  }
+
+  function ensureSession() {
+    session ??= new FlowAnimation(ui.exemplar(), options());
+    return session;
+  }
+
+  /** The flow f_t as arrows on a grid (the field's own scale: one arrow per cell). */
+  function drawArrows(t = 0) {
+    const canvas = ui.$('fl-arrows');
+    const ctx = canvas.getContext('2d');
+    ctx.fillStyle = '#101217';
+    ctx.fillRect(0, 0, canvas.width, canvas.height);
+    const [w, h] = [ui.outputWidth(), ui.outputHeight()];
+    let field;
+    try {
+      field = flowField(spec(), w, h, t);
+    } catch (error) {
+      ui.$('fl-arrows-caption').textContent = error.message;
+      return;
+    }
+    const cells = 10;
+    const sx = canvas.width / w;
+    const sy = canvas.height / h;
+    let max = 1e-6;
+    for (let i = 0; i < field.length; i += 2) max = Math.max(max, Math.hypot(field[i], field[i + 1]));
+    const scale = (0.9 * canvas.width) / cells / max;
+    ctx.strokeStyle = '#e0a458';
+    ctx.lineWidth = 1.2;
+    for (let gy = 0; gy < cells; gy++) {
+      for (let gx = 0; gx < cells; gx++) {
+        const x = Math.floor(((gx + 0.5) * w) / cells);
+        const y = Math.floor(((gy + 0.5) * h) / cells);
+        const i = (y * w + x) * 2;
+        const [vx, vy] = [field[i] * scale, field[i + 1] * scale];
+        const [x0, y0] = [x * sx, y * sy];
+        arrow(ctx, x0 - vx / 2, y0 - vy / 2, x0 + vx / 2, y0 + vy / 2);
+      }
+    }
+    ui.$('fl-arrows-caption').textContent = `the flow at frame ${t + 1}: up to ${max.toFixed(2)} px per frame`;
+  }
+
+  function plot() {
+    drawLinePlot(ui.$('fl-texture'), Array.from(session?.textureEnergyHistory() ?? []), { title: 'texture energy per frame' });
+    drawLinePlot(ui.$('fl-flow-energy'), Array.from(session?.flowEnergyHistory() ?? []).slice(1), {
+      title: 'flow energy per frame (from frame 2)',
+      color: '#6fb3d2',
+    });
+  }
+
+  /** Loops the finished frames on the playback canvas. */
+  function startPlayback() {
+    if (playTimer) return;
+    playTimer = setInterval(() => {
+      if (recording || frames.length === 0) return;
+      playIndex = (playIndex + 1) % frames.length;
+      showFrame(ui.$('fl-playback'), frames[playIndex]);
+    }, 1000 / PLAYBACK_FPS);
+  }
+
+  async function record() {
+    if (frames.length < 2 || recording) return;
+    recording = true;
+    ui.$('fl-record').disabled = true;
+    ui.$('fl-record').textContent = 'recording…';
+    try {
+      const blob = await recordFrames(ui.$('fl-playback'), frames, PLAYBACK_FPS, showFrame);
+      const link = ui.$('fl-download');
+      if (link.href) URL.revokeObjectURL(link.href);
+      link.href = URL.createObjectURL(blob);
+      link.textContent = `download video (${frames.length} frames, ${(blob.size / 1024).toFixed(0)} KB WebM)`;
+      link.hidden = false;
+      document.body.dataset.recordedBytes = String(blob.size);
+      document.body.dataset.recordedType = blob.type;
+    } catch (error) {
+      ui.$('fl-readout').textContent = `recording failed: ${error.message ?? error}`;
+    } finally {
+      recording = false;
+      ui.$('fl-record').disabled = false;
+      ui.$('fl-record').textContent = 'Record WebM';
+    }
+  }
+
+  return {
+    id,
+    title,
+    optionsHtml: OPTIONS_HTML,
+    sideHtml: SIDE_HTML,
+    mount() {
+      ui.$('fl-record').addEventListener('click', record);
+      for (const id of ['fl-flow', 'fl-strength']) ui.$(id).addEventListener('change', () => drawArrows());
+      startPlayback();
+    },
+    unmount() {
+      clearInterval(playTimer);
+      playTimer = null;
+    },
+    step() {
+      return ensureSession().done ? null : session.step();
+    },
+    onStep(event) {
+      drawInto(ui.outputCanvas, session);
+      drawInto(ui.$('fl-naive'), {
+        width: session.width,
+        height: session.height,
+        renderInto: (data) => session.renderNaiveInto(data),
+      });
+      if (event.frameFinished) {
+        if (frames.length < MAX_KEPT_FRAMES) {
+          const image = new ImageData(session.width, session.height);
+          session.renderInto(image.data);
+          frames.push(image);
+        }
+        plot();
+        if (event.frame > 0) drawArrows(event.frame - 1);
+        document.body.dataset.flowFrames = String(event.frame + 1);
+      }
+      const what = event.frame === 0
+        ? `frame 1 (full multi-level synthesis) · iteration ${event.iteration}`
+        : `frame ${event.frame + 1}/${session.frames} · neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration}`;
+      ui.$('fl-readout').textContent =
+        `${what} · texture energy ${event.textureEnergy.toPrecision(3)} · flow energy ${event.flowEnergy.toPrecision(3)}`;
+      if (event.done) document.body.dataset.flowDone = 'true';
+    },
+    reset() {
+      session?.free();
+      session = null;
+      frames = [];
+      playIndex = 0;
+      delete document.body.dataset.flowDone;
+      delete document.body.dataset.recordedBytes;
+      document.body.dataset.flowFrames = '0';
+      ui.$('fl-readout').textContent = 'press Run or Step (frames of 128×128 run live; 256×256 at a few per second)';
+      ui.$('fl-download').hidden = true;
+      for (const id of ['fl-playback', 'fl-naive']) {
+        const c = ui.$(id);
+        c.getContext('2d').clearRect(0, 0, c.width, c.height);
+      }
+      const ctx = ui.outputCanvas.getContext('2d');
+      ctx.clearRect(0, 0, ui.outputCanvas.width, ui.outputCanvas.height);
+      plot();
+      drawArrows();
+    },
+  };
+}
+
+function showFrame(canvas, image) {
+  if (canvas.width !== image.width || canvas.height !== image.height) {
+    canvas.width = image.width;
+    canvas.height = image.height;
+  }
+  canvas.getContext('2d').putImageData(image, 0, 0);
+}
+
+function arrow(ctx, x0, y0, x1, y1) {
+  const angle = Math.atan2(y1 - y0, x1 - x0);
+  const head = Math.min(4, Math.hypot(x1 - x0, y1 - y0) / 2);
+  ctx.beginPath();
+  ctx.moveTo(x0, y0);
+  ctx.lineTo(x1, y1);
+  ctx.lineTo(x1 - head * Math.cos(angle - 0.5), y1 - head * Math.sin(angle - 0.5));
+  ctx.moveTo(x1, y1);
+  ctx.lineTo(x1 - head * Math.cos(angle + 0.5), y1 - head * Math.sin(angle + 0.5));
+  ctx.stroke();
+}
