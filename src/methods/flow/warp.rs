@@ -33,9 +33,9 @@ pub fn warp(frame: &Image, flow: &FlowField, edge: Edge) -> Result<Warped> {
             let (vx, vy) = flow.at(x, y);
             let (sx, sy) = (x as f32 - vx, y as f32 - vy);
             // Half a pixel of slack: a source on the border pixel's outer half is still inside.
-            if edge == Edge::Clamp && !(-0.5..=max_x + 0.5).contains(&sx)
-                || edge == Edge::Clamp && !(-0.5..=max_y + 0.5).contains(&sy)
-            {
+            let outside =
+                !(-0.5..=max_x + 0.5).contains(&sx) || !(-0.5..=max_y + 0.5).contains(&sy);
+            if edge == Edge::Clamp && outside {
                 inside[y * w + x] = 0.0;
             }
             sample_bilinear(frame, sx, sy, edge, &mut px);
