@@ -46,6 +46,11 @@ test('the flow panel animates, compares with the naive warp and records a WebM',
   assert.ok(bytes > 1000, `the WebM has ${bytes} bytes`);
   assert.equal(await page.getAttribute('body', 'data-recorded-type'), 'video/webm');
   assert.ok(await page.isVisible('#fl-download'));
+  const header = await page.evaluate(async () => {
+    const blob = await (await fetch(document.getElementById('fl-download').href)).arrayBuffer();
+    return Array.from(new Uint8Array(blob, 0, 4));
+  });
+  assert.deepEqual(header, [0x1a, 0x45, 0xdf, 0xa3], 'the file starts with the EBML (WebM) signature');
   await page.screenshot({ path: `${RESULTS}/flow.png`, fullPage: true });
   assert.deepEqual(errors, []);
 });
