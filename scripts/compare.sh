@@ -50,5 +50,5 @@ if [ "$wasm" = 1 ]; then
   node scripts/compare_wasm.mjs "$plan"
   wasm_args=(--wasm "$(dirname "$plan")/wasm.json")
 fi
-COMPARE_COMMAND="./scripts/compare.sh $*" "$bin" "${wasm_args[@]}" "${pass[@]}"
+COMPARE_COMMAND="./scripts/compare.sh${*:+ $*}" "$bin" "${wasm_args[@]}" "${pass[@]}"
 echo "compare.sh: done in ${SECONDS} s"
