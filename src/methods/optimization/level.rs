@@ -31,6 +31,8 @@ pub struct LevelSetup {
     pub mu: f32,
     /// Neighbourhoods wrap around the output's borders.
     pub wrap: bool,
+    /// PatchMatch sweeps per M-step.
+    pub passes: usize,
 }
 
 /// A grid and its matches, where carried matches come from.
@@ -69,7 +71,8 @@ impl LevelSolver {
             setup.size,
             setup.search,
             rng,
-        );
+        )
+        .with_passes(setup.passes);
         let cols = grid_axis(setup.output_width, setup.size, setup.spacing, setup.wrap);
         let rows = grid_axis(setup.output_height, setup.size, setup.spacing, setup.wrap);
         let (ex_nx, ex_ny) = matcher.space().extent();

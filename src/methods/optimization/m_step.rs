@@ -11,13 +11,14 @@ use crate::solvers::nn::{FeatureMap, Neighbourhoods, Pos, Search, exact};
 /// iteration, warm-started. Measured on the samples (128 -> 256, `cargo run --release --example
 /// bench`): 2 sweeps end 2% above the exact search's energy on gravel_128, 3 sweeps end below it
 /// for 10-40% more time, 4 sweeps gain nothing more.
-const PATCHMATCH_PASSES: usize = 3;
+pub const PATCHMATCH_PASSES: usize = 3;
 
 /// The exemplar's neighbourhoods at one level, with the search structure built over them.
 pub struct Matcher {
     space: Neighbourhoods,
     search: Search,
     tree: Option<KMeansTree>,
+    passes: usize,
 }
 
 impl Matcher {
@@ -30,7 +31,16 @@ impl Matcher {
             space,
             search,
             tree,
+            passes: PATCHMATCH_PASSES,
         }
+    }
+
+    /// Sets the PatchMatch sweeps per M-step (animation frames start from matches carried along
+    /// the flow and need fewer than a synthesis from scratch).
+    #[must_use]
+    pub fn with_passes(mut self, passes: usize) -> Self {
+        self.passes = passes.max(1);
+        self
     }
 
     #[must_use]
@@ -69,7 +79,7 @@ impl Matcher {
                 grid,
                 matches,
                 distances,
-                PATCHMATCH_PASSES,
+                self.passes,
                 rng,
             ),
             Search::Exact | Search::KMeansTree => {

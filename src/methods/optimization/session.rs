@@ -4,6 +4,7 @@
 use super::constraints::{Constraint, SoftConstraints};
 use super::e_step::edge;
 use super::level::{LevelSetup, LevelSolver, fit_output};
+use super::m_step::PATCHMATCH_PASSES;
 use super::options::Options;
 use super::schedule::{Level, plan};
 use crate::core::pyramid::gaussian_pyramid;
@@ -263,6 +264,7 @@ impl Session {
             r: self.options.r,
             mu: self.options.mu,
             wrap: self.options.tileable,
+            passes: PATCHMATCH_PASSES,
         };
         let mut solver = LevelSolver::new(&self.exemplars[lv.octave], setup, &mut self.rng);
         let previous = self.level.checked_sub(1).map(|i| self.levels[i]);
