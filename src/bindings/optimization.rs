@@ -26,6 +26,7 @@ const KNOWN: &[&str] = &[
     "mu",
     "search",
     "tileable",
+    "completeness",
 ];
 
 /// Reads the options object; absent keys keep the defaults of [`Options`].
@@ -62,6 +63,9 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
         mu: js.number("mu")?.map_or(d.mu, |v| v as f32),
         search,
         tileable: js.boolean("tileable")?.unwrap_or(d.tileable),
+        completeness: js
+            .number("completeness")?
+            .map_or(d.completeness, |v| v as f32),
     })
 }
 

@@ -125,6 +125,7 @@ impl FlowSession {
                     mu: 0.0,
                     wrap: options.tileable,
                     passes: FRAME_PATCHMATCH_PASSES,
+                    completeness: 0.0,
                 };
                 LevelSolver::new(exemplar, setup, &mut rng)
             })

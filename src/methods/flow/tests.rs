@@ -120,17 +120,17 @@ fn a_vortex_keeps_the_texture_while_the_naive_warp_smears_it() {
     let exemplar = sample("gravel_64");
     let (frames, naive, events) = animate(&exemplar, vortex(2.0), options(50));
     assert_eq!(frames.len(), 50);
-    // Observed on gravel_64 (64x64 frames, lambda 0.2): the last ten flow-guided frames average
-    // about 1.2x the first frame's coherence, single frames up to 1.4x; the naive warp reaches
-    // 2.9x, where the blur saturates at this size.
+    // Observed on gravel_64 (64x64 frames, lambda 0.2): the flow-guided frames stay at about
+    // the first frame's coherence (0.92-1.04x); the naive warp reaches 2.5x, where the blur
+    // saturates at this size.
     let guided = relative_coherence(&exemplar, &frames[40..], &frames[0]);
     let smeared = relative_coherence(&exemplar, std::slice::from_ref(&naive), &frames[0]);
     assert!(
-        guided < 1.5,
+        guided < 1.3,
         "flow-guided frames: {guided:.2}x the first frame's coherence"
     );
     assert!(
-        smeared > 2.5,
+        smeared > 2.1,
         "naive warp: {smeared:.2}x the first frame's coherence"
     );
     // The frames follow the flow: each is far closer to its predecessor carried along the flow

@@ -7,13 +7,14 @@ use super::constraints::Constraint;
 use super::e_step::{Matches, e_step, robust_weight};
 use super::features::{feature_map, gather};
 use super::m_step::Matcher;
+use super::occurrence::Occurrence;
 use super::schedule::{grid_axis, nearest_corner};
 use crate::core::sample::resize_bilinear;
 use crate::core::{Edge, Image, Result, Rng};
 use crate::methods::optimization::e_step::edge;
 use crate::solvers::nn::patches::gaussian_falloff;
 use crate::solvers::nn::patchmatch::QueryGrid;
-use crate::solvers::nn::{Pos, Search};
+use crate::solvers::nn::{Objective, Pos, Search};
 
 /// The fixed settings of a level.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -33,6 +34,8 @@ pub struct LevelSetup {
     pub wrap: bool,
     /// PatchMatch sweeps per M-step.
     pub passes: usize,
+    /// Weight alpha of the occurrence penalty (see [`super::occurrence`]); 0 is off.
+    pub completeness: f32,
 }
 
 /// A grid and its matches, where carried matches come from.
@@ -200,56 +203,78 @@ impl LevelSolver {
             cols: &self.cols,
             rows: &self.rows,
         };
-        let Some(constraint) = constraint else {
-            let changed = self.matcher.m_step(
-                &self.queries,
-                None,
-                grid,
-                &mut self.matches,
-                &mut self.distances,
-                rng,
-            );
-            self.objective.copy_from_slice(&self.distances);
-            return changed;
+        let occurrence = self.occurrence();
+        let penalty = occurrence.as_ref().map(|o| move |z: Pos| o.penalty(z));
+        let mut objective = Objective {
+            weights: None,
+            penalty: penalty.as_ref().map(|f| f as &dyn Fn(Pos) -> f32),
         };
-        self.constrained.clone_from(&self.queries);
-        self.constrained_weights.clear();
-        for _ in 0..self.matches.len() {
-            self.constrained_weights.extend_from_slice(space.weights());
-        }
-        for (n, (query, weights)) in self
-            .constrained
-            .chunks_exact_mut(len)
-            .zip(self.constrained_weights.chunks_exact_mut(len))
-            .enumerate()
-        {
-            constraint.apply_to_query(
-                self.cols[n % nx],
-                self.rows[n / nx],
-                size,
-                map.dims,
-                wrap,
-                query,
-                weights,
-            );
+        let mut queries = &self.queries;
+        if let Some(constraint) = constraint {
+            self.constrained.clone_from(&self.queries);
+            self.constrained_weights.clear();
+            for _ in 0..self.matches.len() {
+                self.constrained_weights.extend_from_slice(space.weights());
+            }
+            for (n, (query, weights)) in self
+                .constrained
+                .chunks_exact_mut(len)
+                .zip(self.constrained_weights.chunks_exact_mut(len))
+                .enumerate()
+            {
+                constraint.apply_to_query(
+                    self.cols[n % nx],
+                    self.rows[n / nx],
+                    size,
+                    map.dims,
+                    wrap,
+                    query,
+                    weights,
+                );
+            }
+            queries = &self.constrained;
+            objective.weights = Some(&self.constrained_weights);
         }
         let changed = self.matcher.m_step(
-            &self.constrained,
-            Some(&self.constrained_weights),
+            queries,
+            &objective,
             grid,
             &mut self.matches,
             &mut self.objective,
             rng,
         );
-        // The IRLS weights and the reported energy are about the texture term alone.
-        for (n, d) in self.distances.iter_mut().enumerate() {
-            *d = space.distance(
-                &self.queries[n * len..(n + 1) * len],
-                self.matches[n],
-                f32::INFINITY,
-            );
+        if constraint.is_none() && occurrence.is_none() {
+            self.distances.copy_from_slice(&self.objective);
+        } else {
+            // The IRLS weights and the reported energy are about the texture term alone.
+            for (n, d) in self.distances.iter_mut().enumerate() {
+                *d = space.distance(
+                    &self.queries[n * len..(n + 1) * len],
+                    self.matches[n],
+                    f32::INFINITY,
+                );
+            }
         }
         changed
+    }
+
+    /// The occurrence penalty for this M-step (None when it is off, or before the level's first
+    /// M-step, when there are no distances to scale it by).
+    fn occurrence(&self) -> Option<Occurrence> {
+        let alpha = self.setup.completeness;
+        if alpha <= 0.0 || self.distances.iter().any(|d| !d.is_finite()) {
+            return None;
+        }
+        let mean = self.distances.iter().map(|&d| f64::from(d)).sum::<f64>()
+            / self.distances.len().max(1) as f64;
+        let ex = self.matcher.space().exemplar();
+        Some(Occurrence::new(
+            &self.matches,
+            self.setup.size,
+            ex.width,
+            ex.height,
+            alpha * mean as f32,
+        ))
     }
 
     /// The E-step: replaces `output` (this level's size) by the minimiser of the IRLS-weighted

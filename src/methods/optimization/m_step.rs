@@ -5,7 +5,7 @@
 use crate::core::Rng;
 use crate::solvers::nn::kmeans_tree::KMeansTree;
 use crate::solvers::nn::patchmatch::{self, QueryGrid};
-use crate::solvers::nn::{FeatureMap, Neighbourhoods, Pos, Search, exact};
+use crate::solvers::nn::{FeatureMap, Neighbourhoods, Objective, Pos, Search, exact};
 
 /// PatchMatch sweeps per M-step (forward, backward, forward). The EM loop calls it again every
 /// iteration, warm-started. Measured on the samples (128 -> 256, `cargo run --release --example
@@ -48,25 +48,24 @@ impl Matcher {
         &self.space
     }
 
-    /// Recomputes `distances` for the current `matches` (the queries changed in the E-step), then
-    /// improves the matches. `weights`, when given, are per-value weights for every query (soft
-    /// constraints) in place of the Gaussian fall-off. Returns how many matches changed.
+    /// Recomputes `costs` for the current `matches` (the queries changed in the E-step), then
+    /// improves the matches under `objective` (the plain distance, or with soft-constraint
+    /// weights and an occurrence penalty). Returns how many matches changed.
     pub fn m_step(
         &self,
         queries: &[f32],
-        weights: Option<&[f32]>,
+        objective: &Objective<'_>,
         grid: QueryGrid<'_>,
         matches: &mut [Pos],
-        distances: &mut [f32],
+        costs: &mut [f32],
         rng: &mut Rng,
     ) -> usize {
         let len = self.space.vector_len();
-        let weights_of =
-            |n: usize| weights.map_or(self.space.weights(), |w| &w[n * len..(n + 1) * len]);
-        for (n, (m, d)) in matches.iter().zip(distances.iter_mut()).enumerate() {
-            *d = self.space.distance_with(
+        for (n, (m, d)) in matches.iter().zip(costs.iter_mut()).enumerate() {
+            *d = objective.cost(
+                &self.space,
+                n,
                 &queries[n * len..(n + 1) * len],
-                weights_of(n),
                 *m,
                 f32::INFINITY,
             );
@@ -75,32 +74,31 @@ impl Matcher {
             Search::PatchMatch => patchmatch::improve(
                 &self.space,
                 queries,
-                weights,
+                objective,
                 grid,
                 matches,
-                distances,
+                costs,
                 self.passes,
                 rng,
             ),
             Search::Exact | Search::KMeansTree => {
                 let mut changed = 0;
-                for (n, (m, d)) in matches.iter_mut().zip(distances.iter_mut()).enumerate() {
+                for (n, (m, d)) in matches.iter_mut().zip(costs.iter_mut()).enumerate() {
                     let query = &queries[n * len..(n + 1) * len];
-                    let (pos, dist) = match &self.tree {
+                    let (pos, cost) = match &self.tree {
                         // The tree is built for the fall-off weights: it proposes a candidate
-                        // for the (constrained) query, which is then scored under the query's
-                        // own weights, so a match still only changes to a better one.
+                        // for the query, which is then scored under the objective, so a match
+                        // still only changes to a better one.
                         Some(tree) => {
                             let pos = tree.nearest(&self.space, query).0;
-                            let d = self.space.distance_with(query, weights_of(n), pos, *d);
-                            (pos, d)
+                            (pos, objective.cost(&self.space, n, query, pos, *d))
                         }
-                        None => exact::nearest_with(&self.space, query, weights_of(n)),
+                        None => exact::nearest_by(&self.space, objective, n, query),
                     };
-                    if dist < *d {
+                    if cost < *d {
                         changed += usize::from(pos != *m);
                         *m = pos;
-                        *d = dist;
+                        *d = cost;
                     }
                 }
                 changed

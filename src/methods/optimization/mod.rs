@@ -8,6 +8,7 @@ pub mod e_step;
 pub mod features;
 pub mod level;
 pub mod m_step;
+pub mod occurrence;
 pub mod options;
 pub mod schedule;
 pub mod session;

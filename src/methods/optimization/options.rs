@@ -31,6 +31,9 @@ pub struct Options {
     pub search: Search,
     /// Periodic output: neighbourhoods wrap around the borders, so the result tiles. Default: false.
     pub tileable: bool,
+    /// Weight of the occurrence penalty that makes the output use all of the exemplar (see
+    /// [`super::occurrence`]; not in the paper); 0 is the paper's M-step. Default: 1.
+    pub completeness: f32,
 }
 
 impl Default for Options {
@@ -46,9 +49,16 @@ impl Default for Options {
             mu: 0.0,
             search: Search::PatchMatch,
             tileable: false,
+            completeness: DEFAULT_COMPLETENESS,
         }
     }
 }
+
+/// The default occurrence-penalty weight. Measured on six samples (128 and 64 -> 256, quality
+/// metrics of the README): alpha = 1 cuts the completeness distance by 2x to 9x and the histogram
+/// distance by 1.5x to 5x while coherence stays within 5% (better on some), for 10-20% more time;
+/// alpha = 0.5 does about half as much, alpha = 2 starts to cost coherence.
+pub const DEFAULT_COMPLETENESS: f32 = 1.0;
 
 /// The smallest exemplar side accepted.
 pub const MIN_EXEMPLAR_SIDE: usize = 16;
@@ -101,6 +111,12 @@ impl Options {
         }
         if !self.r.is_finite() || self.r <= 0.0 || self.r > 2.0 {
             return invalid("r", format!("must be in (0, 2], got {}", self.r));
+        }
+        if !self.completeness.is_finite() || !(0.0..=100.0).contains(&self.completeness) {
+            return invalid(
+                "completeness",
+                format!("must be between 0 and 100, got {}", self.completeness),
+            );
         }
         if !self.mu.is_finite() || self.mu < 0.0 || self.mu > 1000.0 {
             return invalid("mu", format!("must be between 0 and 1000, got {}", self.mu));

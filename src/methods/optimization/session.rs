@@ -265,6 +265,7 @@ impl Session {
             mu: self.options.mu,
             wrap: self.options.tileable,
             passes: PATCHMATCH_PASSES,
+            completeness: self.options.completeness,
         };
         let mut solver = LevelSolver::new(&self.exemplars[lv.octave], setup, &mut self.rng);
         let previous = self.level.checked_sub(1).map(|i| self.levels[i]);

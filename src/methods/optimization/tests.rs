@@ -40,6 +40,9 @@ fn quadratic_energy_never_rises_within_a_level() {
                     r: 2.0,
                     mu,
                     iterations: 6,
+                    // The occurrence penalty trades texture energy for completeness; the paper's
+                    // M-step alone never raises it.
+                    completeness: 0.0,
                     ..small(search)
                 },
             );
@@ -168,44 +171,38 @@ fn row_step(img: &Image, a: usize, b: usize) -> f32 {
 #[test]
 fn tileable_output_has_no_seam_at_the_wrap() {
     let exemplar = sample("gravel_64");
-    let options = Options {
-        output_width: 72,
-        output_height: 64,
-        tileable: true,
-        ..Options::default()
+    // The step across the wrap, relative to the mean step between neighbouring columns (rows)
+    // inside. One column is a noisy statistic (single seeds range 0.5-1.5 for tileable output),
+    // so it is averaged over four seeds and both axes.
+    let wrap_ratio = |tileable: bool| -> f32 {
+        let mut sum = 0.0;
+        for seed in 1..=4 {
+            let options = Options {
+                output_width: 72,
+                output_height: 64,
+                tileable,
+                seed,
+                ..Options::default()
+            };
+            let out = run(&exemplar, options).0.output_full_size().unwrap();
+            let (w, h) = (out.width(), out.height());
+            let inside_x: f32 =
+                (1..w).map(|x| column_step(&out, x - 1, x)).sum::<f32>() / (w - 1) as f32;
+            let inside_y: f32 =
+                (1..h).map(|y| row_step(&out, y - 1, y)).sum::<f32>() / (h - 1) as f32;
+            sum += column_step(&out, w - 1, 0) / inside_x + row_step(&out, h - 1, 0) / inside_y;
+        }
+        sum / 8.0
     };
-    let out = run(&exemplar, options.clone())
-        .0
-        .output_full_size()
-        .unwrap();
-    let (w, h) = (out.width(), out.height());
-    let interior_x: f32 = (1..w).map(|x| column_step(&out, x - 1, x)).sum::<f32>() / (w - 1) as f32;
-    let interior_y: f32 = (1..h).map(|y| row_step(&out, y - 1, y)).sum::<f32>() / (h - 1) as f32;
-    let wrap_x = column_step(&out, w - 1, 0);
-    let wrap_y = row_step(&out, h - 1, 0);
-    // The step across the wrap looks like any step inside; without wrapping it is a jump between
-    // unrelated content (checked below so the test can tell the two apart).
+    // Observed: about 1.1 when tileable, about 1.6 without wrapping (a jump between unrelated
+    // content), so the test tells the two apart.
+    let tileable = wrap_ratio(true);
+    let plain = wrap_ratio(false);
     assert!(
-        wrap_x < 1.3 * interior_x,
-        "wrap {wrap_x} vs interior {interior_x}"
+        tileable < 1.25,
+        "tileable wrap step {tileable:.2}x the inside steps"
     );
-    assert!(
-        wrap_y < 1.3 * interior_y,
-        "wrap {wrap_y} vs interior {interior_y}"
-    );
-    let plain = run(
-        &exemplar,
-        Options {
-            tileable: false,
-            ..options
-        },
-    )
-    .0
-    .output_full_size()
-    .unwrap();
-    let plain_interior: f32 =
-        (1..w).map(|x| column_step(&plain, x - 1, x)).sum::<f32>() / (w - 1) as f32;
-    assert!(column_step(&plain, w - 1, 0) > 1.3 * plain_interior);
+    assert!(plain > 1.35, "plain wrap step {plain:.2}x the inside steps");
 }
 
 #[test]
@@ -331,4 +328,41 @@ fn constraints_set_on_a_finished_session_reopen_the_finest_level() {
             .to_string()
             .contains("channels")
     );
+}
+
+#[test]
+#[ignore = "exploration: quality against the occurrence-penalty weight (COMPLETENESS=0,0.5,1)"]
+fn quality_against_completeness_weight() {
+    use crate::methods::quality::quality;
+    let weights: Vec<f32> = std::env::var("COMPLETENESS")
+        .unwrap_or("0,0.5,1,2".into())
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    for name in [
+        "grass_128",
+        "brick_64",
+        "tiles_128",
+        "gravel_128",
+        "ballast_64",
+        "sand_128",
+    ] {
+        let exemplar = sample(name);
+        for &completeness in &weights {
+            let t = std::time::Instant::now();
+            let (session, _) = run(
+                &exemplar,
+                Options {
+                    completeness,
+                    ..Options::default()
+                },
+            );
+            let ms = t.elapsed().as_millis();
+            let q = quality(&exemplar, &session.output_full_size().unwrap()).unwrap();
+            println!(
+                "{name:12} alpha {completeness:4}: {ms:5} ms coherence {:.6} completeness {:.6} histogram {:.5}",
+                q.coherence, q.completeness, q.histogram
+            );
+        }
+    }
 }

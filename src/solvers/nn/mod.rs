@@ -8,6 +8,42 @@ pub mod patchmatch;
 
 pub use patches::{FeatureMap, Neighbourhoods, Pos};
 
+/// What a search minimises for query `n`: the weighted distance (under the query's own weights
+/// when given, e.g. soft constraints) plus a penalty on the candidate (e.g. for exemplar
+/// neighbourhoods already used too often). The default is the plain distance.
+#[derive(Clone, Copy, Default)]
+pub struct Objective<'a> {
+    /// Per-value weights for every query, laid out like the queries.
+    pub weights: Option<&'a [f32]>,
+    /// A cost added for a candidate, whatever the query.
+    pub penalty: Option<&'a dyn Fn(Pos) -> f32>,
+}
+
+impl Objective<'_> {
+    /// The cost of `pos` for query `n`; stops early (returning a value above `bound`) as soon
+    /// as it exceeds `bound`.
+    #[inline]
+    #[must_use]
+    pub fn cost(
+        &self,
+        space: &Neighbourhoods,
+        n: usize,
+        query: &[f32],
+        pos: Pos,
+        bound: f32,
+    ) -> f32 {
+        let extra = self.penalty.map_or(0.0, |f| f(pos));
+        if extra > bound {
+            return extra;
+        }
+        let len = space.vector_len();
+        let weights = self
+            .weights
+            .map_or(space.weights(), |w| &w[n * len..(n + 1) * len]);
+        extra + space.distance_with(query, weights, pos, bound - extra)
+    }
+}
+
 /// Which nearest-neighbourhood search the M-step uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Search {

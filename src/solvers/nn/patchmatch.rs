@@ -3,6 +3,7 @@
 //! around its own match at halving radii (random search). Warm-started from the previous
 //! iteration's matches, so the EM iterations double as PatchMatch iterations.
 
+use super::Objective;
 use super::patches::{Neighbourhoods, Pos};
 use crate::core::Rng;
 
@@ -16,13 +17,13 @@ pub struct QueryGrid<'a> {
 
 /// Improves `matches` (and their `distances`, which must be current) in place by `passes`
 /// alternating forward/backward sweeps. A match only ever changes to a strictly closer one, so
-/// the energy cannot rise. `query_weights`, when given, holds per-value weights for every query
-/// (laid out like `queries`) in place of the space's own. Returns how many nodes changed.
+/// the cost cannot rise. Costs are those of `objective` (the plain distance by default); the
+/// `distances` are in its terms. Returns how many nodes changed.
 #[allow(clippy::too_many_arguments)]
 pub fn improve(
     space: &Neighbourhoods,
     queries: &[f32],
-    query_weights: Option<&[f32]>,
+    objective: &Objective<'_>,
     grid: QueryGrid<'_>,
     matches: &mut [Pos],
     distances: &mut [f32],
@@ -41,11 +42,10 @@ pub fn improve(
             let i = if forward { k } else { nx * ny - 1 - k };
             let (gx, gy) = (i % nx, i / nx);
             let query = &queries[i * len..(i + 1) * len];
-            let weights = query_weights.map_or(space.weights(), |w| &w[i * len..(i + 1) * len]);
             let mut best = (matches[i], distances[i]);
             let consider = |candidate: Pos, best: &mut (Pos, f32)| {
                 if candidate != best.0 {
-                    let d = space.distance_with(query, weights, candidate, best.1);
+                    let d = objective.cost(space, i, query, candidate, best.1);
                     if d < best.1 {
                         *best = (candidate, d);
                     }
@@ -154,7 +154,7 @@ mod tests {
             improve(
                 &space,
                 &queries,
-                None,
+                &Objective::default(),
                 grid,
                 &mut matches,
                 &mut distances,
@@ -199,7 +199,7 @@ mod tests {
             improve(
                 &space,
                 &queries,
-                None,
+                &Objective::default(),
                 grid,
                 &mut matches,
                 &mut distances,

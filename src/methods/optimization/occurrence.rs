@@ -1,0 +1,135 @@
+//! An occurrence penalty for the M-step: exemplar neighbourhoods that the current matches already
+//! cover more often than their share cost extra, so the output draws on all of the exemplar.
+//!
+//! The texture energy of Kwatra et al. 2005 only asks that every output neighbourhood look like
+//! *some* exemplar neighbourhood; nothing asks that all of the exemplar appear, and outputs
+//! settle on a favourite part of it (grass without its leaves, measured by the completeness
+//! metric). Later work on texture optimisation (Kaspar et al. 2015, "Self tuning texture
+//! optimization") adds a penalty on over-used exemplar patches for this; this is that idea in
+//! its simplest form: with C the number of matched neighbourhoods covering each exemplar pixel,
+//! C̄ its mean, U(z) the mean of C over candidate z's window divided by C̄, and d̄ the mean
+//! distance of the current matches, a candidate costs `alpha * d̄ * max(0, U(z) - 1)` on top of
+//! its distance.
+
+use crate::solvers::nn::Pos;
+
+/// The coverage of the exemplar by the current matches, ready to price candidates.
+pub struct Occurrence {
+    /// Summed-area table of the coverage, `(width + 1) * (height + 1)`.
+    table: Vec<f64>,
+    width: usize,
+    size: usize,
+    /// Penalty per unit of over-use: alpha * mean distance.
+    scale: f32,
+    /// Reciprocal of the mean window sum (the coverage an even use would give a window).
+    inv_even: f64,
+}
+
+impl Occurrence {
+    /// Coverage of a `width` x `height` exemplar by `size`-wide neighbourhoods at `matches`;
+    /// `scale` is alpha times the mean distance of the matches.
+    #[must_use]
+    pub fn new(matches: &[Pos], size: usize, width: usize, height: usize, scale: f32) -> Self {
+        // Each match adds 1 over its window: a 2-D difference array, then prefix sums.
+        let stride = width + 1;
+        let mut diff = vec![0.0f64; stride * (height + 1)];
+        for m in matches {
+            let (x, y) = (m.x as usize, m.y as usize);
+            diff[y * stride + x] += 1.0;
+            diff[y * stride + x + size] -= 1.0;
+            diff[(y + size) * stride + x] -= 1.0;
+            diff[(y + size) * stride + x + size] += 1.0;
+        }
+        let mut coverage = vec![0.0f64; width * height];
+        for y in 0..height {
+            let mut run = 0.0;
+            for x in 0..width {
+                run += diff[y * stride + x];
+                coverage[y * width + x] = run
+                    + if y > 0 {
+                        coverage[(y - 1) * width + x]
+                    } else {
+                        0.0
+                    };
+            }
+        }
+        let mut table = vec![0.0f64; stride * (height + 1)];
+        for y in 0..height {
+            let mut run = 0.0;
+            for x in 0..width {
+                run += coverage[y * width + x];
+                table[(y + 1) * stride + x + 1] = table[y * stride + x + 1] + run;
+            }
+        }
+        let even =
+            (matches.len() * size * size) as f64 / (width * height) as f64 * (size * size) as f64;
+        Occurrence {
+            table,
+            width,
+            size,
+            scale,
+            inv_even: if even > 0.0 { 1.0 / even } else { 0.0 },
+        }
+    }
+
+    /// Sum of the coverage over the window at `z`.
+    fn window(&self, z: Pos) -> f64 {
+        let stride = self.width + 1;
+        let (x0, y0) = (z.x as usize, z.y as usize);
+        let (x1, y1) = (x0 + self.size, y0 + self.size);
+        self.table[y1 * stride + x1] - self.table[y0 * stride + x1] - self.table[y1 * stride + x0]
+            + self.table[y0 * stride + x0]
+    }
+
+    /// The penalty of candidate `z`: zero up to an even share of use, then linear in the excess.
+    #[must_use]
+    pub fn penalty(&self, z: Pos) -> f32 {
+        let over = (self.window(z) * self.inv_even - 1.0).max(0.0);
+        self.scale * over as f32
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn coverage_sums_match_a_direct_count() {
+        let matches = [
+            Pos::new(0, 0),
+            Pos::new(2, 1),
+            Pos::new(2, 1),
+            Pos::new(5, 4),
+        ];
+        let (w, h, size) = (9, 8, 3);
+        let occ = Occurrence::new(&matches, size, w, h, 1.0);
+        for zy in 0..=h - size {
+            for zx in 0..=w - size {
+                let mut direct = 0usize;
+                for y in zy..zy + size {
+                    for x in zx..zx + size {
+                        direct += matches
+                            .iter()
+                            .filter(|m| {
+                                (m.x as usize..m.x as usize + size).contains(&x)
+                                    && (m.y as usize..m.y as usize + size).contains(&y)
+                            })
+                            .count();
+                    }
+                }
+                assert_eq!(occ.window(Pos::new(zx, zy)), direct as f64, "({zx}, {zy})");
+            }
+        }
+    }
+
+    #[test]
+    fn over_used_windows_cost_and_unused_ones_do_not() {
+        let matches = vec![Pos::new(0, 0); 10];
+        let occ = Occurrence::new(&matches, 4, 16, 16, 2.0);
+        assert!(occ.penalty(Pos::new(0, 0)) > 0.0);
+        assert_eq!(occ.penalty(Pos::new(12, 12)), 0.0);
+        // 10 matches of 16 pixels over 256 pixels: an even window holds 10 * 16 / 256 * 16 = 10;
+        // the used one holds 160, 15 over.
+        assert!((occ.penalty(Pos::new(0, 0)) - 2.0 * 15.0).abs() < 1e-4);
+    }
+}
