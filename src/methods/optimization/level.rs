@@ -243,8 +243,16 @@ impl LevelSolver {
             &mut self.objective,
             rng,
         );
-        if constraint.is_none() && occurrence.is_none() {
-            self.distances.copy_from_slice(&self.objective);
+        if constraint.is_none() {
+            // Costs are distance + penalty of the match (accepted candidates have full sums).
+            for ((d, &cost), &m) in self
+                .distances
+                .iter_mut()
+                .zip(&self.objective)
+                .zip(&self.matches)
+            {
+                *d = cost - occurrence.as_ref().map_or(0.0, |o| o.penalty(m));
+            }
         } else {
             // The IRLS weights and the reported energy are about the texture term alone.
             for (n, d) in self.distances.iter_mut().enumerate() {
