@@ -7,7 +7,7 @@ use super::constraints::Constraint;
 use super::e_step::{Matches, e_step, robust_weight};
 use super::features::{feature_map, gather};
 use super::m_step::Matcher;
-use super::occurrence::Occurrence;
+use super::occurrence::{Occurrence, strength};
 use super::schedule::{grid_axis, nearest_corner};
 use crate::core::sample::resize_bilinear;
 use crate::core::{Edge, Image, Result, Rng};
@@ -276,12 +276,16 @@ impl LevelSolver {
         let mean = self.distances.iter().map(|&d| f64::from(d)).sum::<f64>()
             / self.distances.len().max(1) as f64;
         let ex = self.matcher.space().exemplar();
+        let share = strength(
+            ex.width * ex.height,
+            self.setup.output_width * self.setup.output_height,
+        );
         Some(Occurrence::new(
             &self.matches,
             self.setup.size,
             ex.width,
             ex.height,
-            alpha * mean as f32,
+            alpha * share * mean as f32,
         ))
     }
 

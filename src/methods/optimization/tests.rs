@@ -339,14 +339,9 @@ fn quality_against_completeness_weight() {
         .split(',')
         .map(|v| v.parse().unwrap())
         .collect();
-    for name in [
-        "grass_128",
-        "brick_64",
-        "tiles_128",
-        "gravel_128",
-        "ballast_64",
-        "sand_128",
-    ] {
+    let names = std::env::var("SAMPLES")
+        .unwrap_or("grass_128,brick_64,tiles_128,gravel_128,ballast_64,sand_128".into());
+    for name in names.split(',') {
         let exemplar = sample(name);
         for &completeness in &weights {
             let t = std::time::Instant::now();
