@@ -3,19 +3,13 @@
 // soft-constraint demo: paint on a finished texture optimisation and the synthesis follows.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openDemo, RESULTS } from './harness.mjs';
+import { canvasPixels, openDemo, RESULTS } from './harness.mjs';
 
 let demo;
 before(async () => {
   demo = await openDemo();
 });
 after(async () => demo?.close());
-
-const canvasPixels = (page, id) =>
-  page.evaluate((id) => {
-    const c = document.getElementById(id);
-    return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
-  }, id);
 
 test('the flow panel animates, compares with the naive warp and records a WebM', async () => {
   const { page, errors } = demo;

@@ -2,19 +2,13 @@
 // the run reaches done, the seam overlay toggles, and a merge with painted constraints completes.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openDemo, RESULTS } from './harness.mjs';
+import { canvasPixels, openDemo, RESULTS } from './harness.mjs';
 
 let demo;
 before(async () => {
   demo = await openDemo();
 });
 after(async () => demo?.close());
-
-const canvasPixels = (page) =>
-  page.evaluate(() => {
-    const c = document.getElementById('output-canvas');
-    return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
-  });
 
 const redPixels = (pixels) => {
   let n = 0;

@@ -32,3 +32,10 @@ export async function openDemo() {
     },
   };
 }
+
+/** The RGBA pixels of the canvas with `id` (default: the output canvas), as a plain array. */
+export const canvasPixels = (page, id = 'output-canvas') =>
+  page.evaluate((id) => {
+    const c = document.getElementById(id);
+    return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
+  }, id);

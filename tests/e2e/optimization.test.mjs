@@ -2,19 +2,13 @@
 // done, the energy plot gets its points, the teaching view draws the offset map.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openDemo, RESULTS } from './harness.mjs';
+import { canvasPixels, openDemo, RESULTS } from './harness.mjs';
 
 let demo;
 before(async () => {
   demo = await openDemo();
 });
 after(async () => demo?.close());
-
-const canvasPixels = (page, id) =>
-  page.evaluate((id) => {
-    const c = document.getElementById(id);
-    return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
-  }, id);
 
 /** Pixels of the plot's line colour (#e0a458), i.e. the energy points and line. */
 const plotInk = (page) =>
