@@ -6,6 +6,8 @@
 pub mod constraints;
 pub mod e_step;
 pub mod features;
+pub mod histogram;
+pub mod initial;
 pub mod level;
 pub mod m_step;
 pub mod occurrence;

@@ -3,6 +3,7 @@
 
 use super::constraints::{Constraint, SoftConstraints};
 use super::e_step::edge;
+use super::initial::random_patches;
 use super::level::{LevelSetup, LevelSolver, fit_output};
 use super::m_step::PATCHMATCH_PASSES;
 use super::options::Options;
@@ -296,6 +297,20 @@ impl Session {
         let exemplar = &self.exemplars[lv.octave];
         let solver = self.solver.as_mut().expect("level entered");
         let constraint = self.constraint.as_ref();
+        if self.output.is_none() {
+            // The coarsest level starts from random exemplar patches (see [`random_patches`]).
+            let block = std::env::var("INIT_BLOCK").ok().map_or(lv.size, |v| v.parse().unwrap());
+            if block > 0 {
+                self.output = Some(random_patches(
+                    exemplar,
+                    lv.output_width,
+                    lv.output_height,
+                    block,
+                    &mut self.rng,
+                )?);
+                self.fresh = true;
+            }
+        }
         if self.fresh {
             let out = self.output.as_ref().expect("fresh levels have an output");
             solver.m_step(out, constraint, &mut self.rng);
@@ -310,6 +325,10 @@ impl Session {
             )?),
         };
         solver.e_step(exemplar, output, constraint);
+        let hist: f32 = std::env::var("HIST").ok().map_or(0.0, |v| v.parse().unwrap());
+        if hist > 0.0 {
+            super::histogram::SortedChannels::new(exemplar).match_histogram(output, hist, &mut Vec::new());
+        }
         Ok(solver.m_step(output, constraint, &mut self.rng))
     }
 

@@ -8,9 +8,14 @@
 //!   does the output use all of the exemplar?
 //! - **histogram distance**: per-channel earth mover's distance between the colour histograms
 //!   (256 bins on 0..1), averaged over R, G, B; 0 means identical colour distributions.
+//! - **flat fraction** (the detail metric, see [`detail`]): the share of output pixels whose
+//!   7x7 luminance contrast is below the exemplar's 10th percentile of it; the exemplar itself
+//!   scores about 0.10, a washed-out output up to 1. Coherence and completeness do not see
+//!   flat regions: a flat patch lies close to the smooth parts of many exemplars.
 //!
-//! Lower is better for all three.
+//! Lower is better for all four.
 
+pub mod detail;
 mod nearest;
 
 use crate::core::{Error, Image, Result};
@@ -22,12 +27,14 @@ pub const PATCH: usize = 7;
 pub const STRIDE: usize = 2;
 const BINS: usize = 256;
 
-/// The three metrics of one output against its exemplar.
+/// The four metrics of one output against its exemplar.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Quality {
     pub coherence: f64,
     pub completeness: f64,
     pub histogram: f64,
+    /// Share of flat output pixels (see [`detail`]); about 0.10 for the exemplar itself.
+    pub flat: f64,
 }
 
 /// Scores `output` against `exemplar` (any channel counts; both are compared as RGB).
@@ -48,6 +55,7 @@ pub fn quality(exemplar: &Image, output: &Image) -> Result<Quality> {
         coherence: directed(&out, &ex),
         completeness: directed(&ex, &out),
         histogram: histogram_distance(&ex, &out),
+        flat: detail::flat_fraction(&out, detail::flat_threshold(&ex)),
     })
 }
 
@@ -123,6 +131,49 @@ mod tests {
         let shifted = Image::from_fn(16, 16, 3, |_, _, _| 0.5).unwrap();
         let h = quality(&flat, &shifted).unwrap().histogram;
         assert!((h - 0.25).abs() < 0.01, "{h}");
+    }
+
+    #[test]
+    fn flat_fraction_of_the_exemplar_a_flat_image_and_a_quarter_flat_one() {
+        let ex = sample("gravel_128");
+        let itself = quality(&ex, &ex).unwrap().flat;
+        assert!((itself - 0.10).abs() < 0.01, "{itself}");
+        let grey = Image::from_fn(64, 64, 3, |_, _, _| 0.4).unwrap();
+        assert_eq!(quality(&ex, &grey).unwrap().flat, 1.0);
+        // The top-left quarter of a 2x2 tiling of the exemplar replaced by its mean colour: a
+        // quarter of the windows, less those that straddle the border, are flat on top of the
+        // exemplar's own 10%.
+        let tiled = Image::from_fn(256, 256, 3, |x, y, k| {
+            if x < 128 && y < 128 {
+                0.45
+            } else {
+                ex.pixel(x % 128, y % 128)[k.min(ex.channels() - 1)]
+            }
+        })
+        .unwrap();
+        let quarter = quality(&ex, &tiled).unwrap().flat;
+        let expected = (122.0 * 122.0 + 0.10 * (250.0 * 250.0 - 128.0 * 128.0)) / (250.0 * 250.0);
+        assert!((quarter - expected).abs() < 0.03, "{quarter} vs {expected}");
+    }
+
+    #[test]
+    fn contrast_is_the_window_standard_deviation() {
+        let img = noise(12, 9, 3, 4);
+        let contrast = detail::local_contrast(&img);
+        assert_eq!(contrast.len(), 6 * 3);
+        for (i, &c) in contrast.iter().enumerate() {
+            let (x0, y0) = (i % 6, i / 6);
+            let lum: Vec<f64> = (y0..y0 + 7)
+                .flat_map(|y| (x0..x0 + 7).map(move |x| (x, y)))
+                .map(|(x, y)| {
+                    let p = img.pixel(x, y);
+                    0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2])
+                })
+                .collect();
+            let mean = lum.iter().sum::<f64>() / 49.0;
+            let sd = (lum.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / 49.0).sqrt();
+            assert!((f64::from(c) - sd).abs() < 1e-4, "{c} vs {sd}");
+        }
     }
 
     #[test]
