@@ -195,10 +195,16 @@ fn kmeans(
 ) -> Option<[usize; K]> {
     let n = space.vector_len();
     let weights = space.weights();
-    // Seeds: K distinct members chosen at random.
+    // Seeds: K distinct members chosen at random, drawn without replacement by a partial
+    // Fisher-Yates shuffle of `members` (reordered below anyway). A repeated seed would only
+    // leave its cluster empty. With fewer than K members, the extra seeds repeat the first ones.
+    for c in 0..K.min(members.len()) {
+        let pick = c + rng.index(members.len() - c);
+        members.swap(c, pick);
+    }
     for c in 0..K {
-        let pick = members[rng.index(members.len())];
-        space.copy_to(pick, &mut s.centroids[c * n..(c + 1) * n]);
+        let seed = members[c % members.len()];
+        space.copy_to(seed, &mut s.centroids[c * n..(c + 1) * n]);
     }
     s.assignment.clear();
     s.assignment.resize(members.len(), 0);
@@ -320,6 +326,19 @@ mod tests {
             tree_total <= exact_total * 1.25,
             "tree {tree_total} vs exact {exact_total}"
         );
+    }
+
+    #[test]
+    fn k_different_neighbourhoods_split_into_k_single_leaves() {
+        // K members, all different, and leaves of one: distinct seeds give each member its own
+        // cluster at the first split. Seeds drawn with replacement repeat a member 91% of the
+        // time (1 - 4!/4^4), leaving a cluster empty.
+        let space = space(5, 5, 4);
+        assert_eq!(space.count(), K);
+        for seed in 0..64 {
+            let tree = KMeansTree::build_with_leaf_limit(&space, 1, &mut Rng::new(seed));
+            assert_eq!(tree.leaf_sizes(), [1; K], "seed {seed}");
+        }
     }
 
     #[test]
