@@ -73,8 +73,8 @@ impl Synthesis {
                     }
                 }
                 if mixed {
-                    for k in 0..c {
-                        out.pixel_mut(x, y)[k] = acc[k] / total;
+                    for (v, sum) in out.pixel_mut(x, y).iter_mut().zip(&acc) {
+                        *v = sum / total;
                     }
                 }
             }

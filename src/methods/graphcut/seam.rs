@@ -166,7 +166,7 @@ impl Synthesis {
     #[must_use]
     pub fn left(&self, i: usize) -> Option<usize> {
         let w = self.canvas.width;
-        if i % w > 0 {
+        if !i.is_multiple_of(w) {
             Some(i - 1)
         } else if self.canvas.wrap && w > 1 {
             Some(i + w - 1)

@@ -67,8 +67,7 @@ pub fn offset_map(session: &Session) -> Result<Image> {
             rows,
             (y as f64 + 0.5) * level.output_height as f64 / h as f64 - half,
         );
-        for x in 0..w {
-            let (i, rx) = column_of[x];
+        for (x, &(i, rx)) in column_of.iter().enumerate() {
             let z = matches[j * cols.len() + i];
             let u = ((f64::from(z.x) + rx + half) / ew).clamp(0.0, 1.0) as f32;
             let v = ((f64::from(z.y) + ry + half) / eh).clamp(0.0, 1.0) as f32;

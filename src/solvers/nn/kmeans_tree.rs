@@ -227,13 +227,13 @@ fn kmeans(
                 *sum += f64::from(v);
             }
         }
-        for c in 0..K {
-            if sizes[c] > 0 {
+        for (c, &size) in sizes.iter().enumerate() {
+            if size > 0 {
                 for (centroid, sum) in s.centroids[c * n..(c + 1) * n]
                     .iter_mut()
                     .zip(&s.sums[c * n..])
                 {
-                    *centroid = (*sum / sizes[c] as f64) as f32;
+                    *centroid = (*sum / size as f64) as f32;
                 }
             } else {
                 // An empty cluster takes a random member, so the next iteration can use it.
@@ -354,6 +354,6 @@ mod tests {
         );
         let tree = KMeansTree::build(&flat, &mut Rng::new(0));
         assert_eq!(tree.leaf_sizes(), vec![flat.count()]);
-        assert_eq!(tree.nearest(&flat, &vec![0.5; 16]).1, 0.0);
+        assert_eq!(tree.nearest(&flat, &[0.5; 16]).1, 0.0);
     }
 }
