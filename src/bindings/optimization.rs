@@ -11,7 +11,7 @@ use super::options::{OptionsReader, object};
 use super::pixels::render_into;
 use crate::core::{Error, from_rgba8};
 use crate::methods::optimization::SoftConstraints;
-use crate::methods::optimization::teaching::offset_map;
+use crate::methods::optimization::teaching::{Field, field, offset_map};
 use crate::methods::optimization::{Event, EventKind, Options, Session};
 use crate::solvers::nn::Search;
 
@@ -232,21 +232,27 @@ impl TextureOptimization {
             .collect()
     }
 
-    /// The neighbourhood grid X† of the current level: `{ columns, rows, neighbourhoodSize,
-    /// levelWidth, levelHeight, matches }`, where `columns`/`rows` are the top-left corners in
-    /// level pixels and `matches` holds the chosen exemplar corner z_p of every node as x, y pairs
-    /// (row by row). `null` before the first step.
+    /// The neighbourhood grid X† of the level last iterated (on the step that finishes a level,
+    /// still that level's; see `teaching::Field`): `{ columns, rows, neighbourhoodSize,
+    /// levelWidth, levelHeight, exemplarWidth, exemplarHeight, matches }`, where `columns`/`rows`
+    /// are the top-left corners in level pixels and `matches` holds the chosen exemplar corner
+    /// z_p of every node as x, y pairs (row by row). `null` before the first step.
     pub fn field(&self) -> JsValue {
-        let Some((cols, rows, matches)) = self.session.matches() else {
+        let Some(Field {
+            level,
+            columns,
+            rows,
+            matches,
+        }) = field(&self.session)
+        else {
             return JsValue::NULL;
         };
-        let level = self.session.current_level();
         let to_u32 = |v: &[usize]| {
             Uint32Array::from(v.iter().map(|&x| x as u32).collect::<Vec<_>>().as_slice())
         };
         let pairs: Vec<u32> = matches.iter().flat_map(|m| [m.x, m.y]).collect();
         object(&[
-            ("columns", to_u32(cols).into()),
+            ("columns", to_u32(columns).into()),
             ("rows", to_u32(rows).into()),
             ("neighbourhoodSize", (level.size as u32).into()),
             ("levelWidth", (level.output_width as u32).into()),

@@ -2,7 +2,7 @@
 // the run reaches done, the seam overlay toggles, and a merge with painted constraints completes.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { canvasPixels, openDemo, RESULTS } from './harness.mjs';
+import { canvasPixels, openDemo, qualityInPage, RESULTS } from './harness.mjs';
 
 let demo;
 before(async () => {
@@ -38,7 +38,13 @@ test('the graph-cut panel places patches live and runs to done', async () => {
   const withSeams = await canvasPixels(page);
   assert.ok(redPixels(withSeams) > 50, 'the seam overlay is drawn');
   assert.match(await page.textContent('#gc-quality'), /coherence .* completeness .* histogram/);
-  assert.ok(Number(await page.getAttribute('#gc-quality', 'data-coherence')) >= 0);
+  // Graph cut copies exemplar pixels: its coherence (about 0.00026 here) is far below noise's
+  // (0.08) and below a flat image's (0.001, itself low: a flat patch is close to smooth ones).
+  const coherence = Number(await page.getAttribute('#gc-quality', 'data-coherence'));
+  const noise = await qualityInPage(page, 'tiles_64', 'noise', 160, 128);
+  const flat = await qualityInPage(page, 'tiles_64', 'flat', 160, 128);
+  assert.ok(coherence < noise.coherence / 10, `coherence ${coherence}, noise ${noise.coherence}`);
+  assert.ok(coherence < flat.coherence / 2, `coherence ${coherence}, flat ${flat.coherence}`);
   await page.screenshot({ path: `${RESULTS}/graphcut.png`, fullPage: true });
   await page.uncheck('#gc-seams');
   assert.equal(redPixels(await canvasPixels(page)), 0, 'the seam overlay toggles off');

@@ -39,3 +39,38 @@ export const canvasPixels = (page, id = 'output-canvas') =>
     const c = document.getElementById(id);
     return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
   }, id);
+
+/**
+ * Quality figures `{ coherence, completeness, histogram }` against the sample texture `sample`
+ * (e.g. 'tiles_64'), measured in the page by the same wasm build the page uses, of a `width` x
+ * `height` image: `pixels` (RGBA, as `canvasPixels` returns them), or, to give assertions a
+ * bound that a bad output would cross, 'noise' (uniform, fixed seed) or 'flat' (the sample's
+ * mean colour everywhere).
+ */
+export const qualityInPage = (page, sample, pixels, width, height) =>
+  page.evaluate(async ({ sample, pixels, width, height }) => {
+    const wasm = await import('/pkg/texsynth.js');
+    const bytes = new Uint8Array(await (await fetch(`./samples/${sample}.png`)).arrayBuffer());
+    const exemplar = wasm.Exemplar.fromBytes(bytes);
+    const rgba = new Uint8ClampedArray(width * height * 4);
+    if (pixels === 'noise') {
+      let state = 12345;
+      for (let i = 0; i < rgba.length; i++) {
+        state = (Math.imul(state, 1103515245) + 12345) >>> 0;
+        rgba[i] = i % 4 === 3 ? 255 : state >>> 24;
+      }
+    } else if (pixels === 'flat') {
+      const own = exemplar.toRgba();
+      const mean = [0, 1, 2, 3].map((c) => {
+        let sum = 0;
+        for (let i = c; i < own.length; i += 4) sum += own[i];
+        return Math.round(sum / (own.length / 4));
+      });
+      for (let i = 0; i < rgba.length; i++) rgba[i] = mean[i % 4];
+    } else {
+      rgba.set(pixels);
+    }
+    const q = wasm.measureQuality(exemplar, rgba, width, height);
+    exemplar.free();
+    return { coherence: q.coherence, completeness: q.completeness, histogram: q.histogram };
+  }, { sample, pixels, width, height });

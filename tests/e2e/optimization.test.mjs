@@ -2,7 +2,7 @@
 // done, the energy plot gets its points, the teaching view draws the offset map.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { canvasPixels, openDemo, RESULTS } from './harness.mjs';
+import { canvasPixels, openDemo, qualityInPage, RESULTS } from './harness.mjs';
 
 let demo;
 before(async () => {
@@ -46,7 +46,18 @@ test('stepping redraws, running reaches done, the plot has points', async () => 
   const final = await canvasPixels(page, 'output-canvas');
   assert.ok(new Set(final).size > 50, 'the output is a texture, not a flat colour');
   assert.match(await page.textContent('#to-quality'), /coherence .* completeness .* histogram/);
-  assert.ok(Number(await page.getAttribute('#to-quality', 'data-coherence')) >= 0);
+  // Against bad outputs scored the same way. Coherence: far below noise's (about 0.0008 against
+  // 0.08); a flat image scores 0.001, so coherence alone cannot tell a washed-out output.
+  // Completeness can: a flat image scores 0.011, the output about 0.0002.
+  const coherence = Number(await page.getAttribute('#to-quality', 'data-coherence'));
+  const noise = await qualityInPage(page, 'tiles_64', 'noise', 128, 128);
+  const flat = await qualityInPage(page, 'tiles_64', 'flat', 128, 128);
+  const output = await qualityInPage(page, 'tiles_64', final, 128, 128);
+  assert.ok(coherence < noise.coherence / 10, `coherence ${coherence}, noise ${noise.coherence}`);
+  assert.ok(
+    output.completeness < flat.completeness / 10,
+    `completeness ${output.completeness}, flat ${flat.completeness}`,
+  );
   await page.screenshot({ path: `${RESULTS}/optimization.png`, fullPage: true });
 
   await page.check('#to-teaching');

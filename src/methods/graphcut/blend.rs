@@ -16,7 +16,13 @@ pub const SPLINE_LEVELS: usize = 4;
 impl Synthesis {
     /// The value patch `patch` shows at pixel `i`, or the output's own where it does not reach.
     fn patch_value(&self, patch: Patch, i: usize) -> &[f32] {
-        self.sample(patch, i, true).colour
+        match self.sample(patch, i, true) {
+            Some(sample) => sample.colour,
+            None => {
+                let w = self.canvas.width;
+                self.canvas.pixels.pixel(i % w, i / w)
+            }
+        }
     }
 
     /// Feathering: a pixel near a seam becomes the average of what each nearby pixel's patch
@@ -67,8 +73,8 @@ impl Synthesis {
                     }
                 }
                 if mixed {
-                    for k in 0..c {
-                        out.pixel_mut(x, y)[k] = acc[k] / total;
+                    for (v, sum) in out.pixel_mut(x, y).iter_mut().zip(&acc) {
+                        *v = sum / total;
                     }
                 }
             }

@@ -26,19 +26,33 @@ pub struct Sample<'a> {
     pub gradient: f32,
 }
 
-/// M(s, t, A, B), or M'(s, t, A, B) when `gradient_scaled`.
+/// M(s, t, A, B), or M'(s, t, A, B) when `gradient_scaled`. A `None` sample is a patch that does
+/// not reach the pixel: the pixel then only ever shows the other patch, so no mismatch between
+/// the two can be seen there, and its term ||A - B|| is zero. This covers an edge to a pixel no
+/// patch covered yet, which must take the new patch B (section 3): its old colour does not
+/// exist, and the black of the empty output is not one. The gradients of eq. 5 are those of the
+/// samples that exist.
 #[inline]
 #[must_use]
 pub fn match_cost(
-    a_s: Sample<'_>,
-    b_s: Sample<'_>,
-    a_t: Sample<'_>,
-    b_t: Sample<'_>,
+    a_s: Option<Sample<'_>>,
+    b_s: Option<Sample<'_>>,
+    a_t: Option<Sample<'_>>,
+    b_t: Option<Sample<'_>>,
     gradient_scaled: bool,
 ) -> f32 {
-    let m = colour_distance(a_s.colour, b_s.colour) + colour_distance(a_t.colour, b_t.colour);
+    let term = |a: Option<Sample<'_>>, b: Option<Sample<'_>>| match (a, b) {
+        (Some(a), Some(b)) => colour_distance(a.colour, b.colour),
+        _ => 0.0,
+    };
+    let m = term(a_s, b_s) + term(a_t, b_t);
     if gradient_scaled {
-        m / (a_s.gradient + a_t.gradient + b_s.gradient + b_t.gradient).max(GRADIENT_FLOOR)
+        let gradients: f32 = [a_s, a_t, b_s, b_t]
+            .iter()
+            .flatten()
+            .map(|sample| sample.gradient)
+            .sum();
+        m / gradients.max(GRADIENT_FLOOR)
     } else {
         m
     }
@@ -48,8 +62,8 @@ pub fn match_cost(
 mod tests {
     use super::*;
 
-    fn s(colour: &[f32], gradient: f32) -> Sample<'_> {
-        Sample { colour, gradient }
+    fn s(colour: &[f32], gradient: f32) -> Option<Sample<'_>> {
+        Some(Sample { colour, gradient })
     }
 
     #[test]
@@ -64,6 +78,17 @@ mod tests {
         };
         assert!(m(&a, &c) <= m(&a, &b) + m(&b, &c));
         assert!((m(&a, &b) - m(&b, &a)).abs() < 1e-7);
+    }
+
+    #[test]
+    fn a_pixel_one_patch_does_not_reach_adds_nothing() {
+        let (a, b) = ([0.2, 0.4, 0.6], [0.9, 0.1, 0.3]);
+        let one_side = match_cost(s(&a, 0.1), s(&b, 0.2), None, s(&b, 0.3), false);
+        assert_eq!(one_side, colour_distance(&a, &b));
+        // The gradients that exist still scale it.
+        let scaled = match_cost(s(&a, 0.1), s(&b, 0.2), None, s(&b, 0.3), true);
+        assert!((scaled - one_side / 0.6).abs() < 1e-6);
+        assert_eq!(match_cost(None, s(&b, 0.0), s(&a, 0.0), None, false), 0.0);
     }
 
     #[test]

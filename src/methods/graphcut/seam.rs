@@ -93,6 +93,9 @@ impl Synthesis {
                         graph.add_terminal(seam, 0.0, old)?;
                     }
                     (a_s, a_t) => {
+                        // One pixel is uncovered and must take B. The seam left if the other
+                        // keeps its patch A costs only that pixel's ||A - B||: A does not reach
+                        // the uncovered one (match_cost), whatever the empty canvas shows there.
                         let a = a_s.or(a_t).expect("one of them is covered");
                         let cost = self.seam_cost(s, t, horizontal, a, patch);
                         graph.add_edge(n, m, cost, cost)?;
@@ -163,7 +166,7 @@ impl Synthesis {
     #[must_use]
     pub fn left(&self, i: usize) -> Option<usize> {
         let w = self.canvas.width;
-        if i % w > 0 {
+        if !i.is_multiple_of(w) {
             Some(i - 1)
         } else if self.canvas.wrap && w > 1 {
             Some(i + w - 1)

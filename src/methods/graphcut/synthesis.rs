@@ -53,34 +53,29 @@ impl Synthesis {
     }
 
     /// What patch `patch` shows at output pixel `i`, with its gradient across a horizontal edge
-    /// (`horizontal`) or a vertical one. A patch that does not cover the pixel shows the current
-    /// output there, so a seam term it cannot see costs nothing.
+    /// (`horizontal`) or a vertical one; `None` where the patch does not reach.
     #[inline]
     #[must_use]
-    pub fn sample(&self, patch: Patch, i: usize, horizontal: bool) -> Sample<'_> {
+    pub fn sample(&self, patch: Patch, i: usize, horizontal: bool) -> Option<Sample<'_>> {
         let (x, y) = (i % self.canvas.width, i / self.canvas.width);
         let source = &self.sources[patch.source as usize];
-        match self.canvas.source_coords(patch, source, x, y) {
-            Some((sx, sy)) => {
-                let k = sy * source.width() + sx;
-                Sample {
-                    colour: source.image.pixel(sx, sy),
-                    gradient: if horizontal {
-                        source.grad_x[k]
-                    } else {
-                        source.grad_y[k]
-                    },
-                }
-            }
-            None => Sample {
-                colour: self.canvas.pixels.pixel(x, y),
-                gradient: 0.0,
+        let (sx, sy) = self.canvas.source_coords(patch, source, x, y)?;
+        let k = sy * source.width() + sx;
+        Some(Sample {
+            colour: source.image.pixel(sx, sy),
+            gradient: if horizontal {
+                source.grad_x[k]
+            } else {
+                source.grad_y[k]
             },
-        }
+        })
     }
 
     /// The seam cost M(s, t, A, B) for neighbouring output pixels `s`, `t` (t right of or below
-    /// s) when s shows patch `a` and t shows patch `b`. Zero when they are the same patch.
+    /// s) when s shows patch `a` and t shows patch `b`. Zero when they are the same patch. A pixel
+    /// one of the patches does not reach adds nothing (see [`match_cost`]): the cost never
+    /// depends on what the canvas shows, so the cut that places a patch and the seam it leaves
+    /// behind are costed alike, covered or not.
     #[must_use]
     pub fn seam_cost(&self, s: usize, t: usize, horizontal: bool, a: Patch, b: Patch) -> f32 {
         if a == b {

@@ -65,22 +65,23 @@ fn the_cut_is_the_cheapest_labelling_including_old_seams() {
             ty: rng.index(14) as i32 - 6,
         };
         let before = s.clone_state();
-        let outside_before = seam_energy_outside(&s, patch);
+        let [outside_before, border_before, _] = seam_energy_by_footprint(&s, patch);
         let placed = s.place(patch, &[], &[]).unwrap();
         assert_pixels_match_labels(&s);
         // The cut value is the seam energy inside the patch after placement (old seams kept,
-        // new seams made), so the whole output's energy is the outside part plus the cut.
+        // new seams made). Edges with one pixel under the patch keep their seam: that pixel is
+        // held to its old patch (or was uncovered, and no patch shows both pixels).
         let after = seam_energy(&s);
-        let outside_after = seam_energy_outside(&s, patch);
+        let [outside_after, border_after, inside_after] = seam_energy_by_footprint(&s, patch);
         assert!(
-            (outside_after - outside_before).abs() < 1e-3,
+            (outside_after - outside_before).abs() < 1e-3
+                && (border_after - border_before).abs() < 1e-3,
             "nothing outside the patch changes"
         );
         assert!(
-            (after - outside_after - placed.cut_cost).abs() < 1e-3 * after.max(1.0),
-            "cut {} vs energy {}",
+            (inside_after - placed.cut_cost).abs() < 1e-3 * after.max(1.0),
+            "cut {} vs energy {inside_after}",
             placed.cut_cost,
-            after - outside_after
         );
         // And no labelling the cut could have chosen is cheaper: keeping everything old, or
         // flipping any single free pixel of the result.
@@ -98,22 +99,21 @@ fn the_cut_is_the_cheapest_labelling_including_old_seams() {
     }
 }
 
-/// Seam energy of edges with no pixel under `patch`.
-fn seam_energy_outside(s: &Synthesis, patch: Patch) -> f64 {
+/// Seam energy of the edges with zero, one and two pixels under `patch`.
+fn seam_energy_by_footprint(s: &Synthesis, patch: Patch) -> [f64; 3] {
     let under: std::collections::HashSet<usize> = s.footprint(patch).into_iter().collect();
-    let mut total = 0.0;
+    let mut totals = [0.0; 3];
     for i in 0..s.canvas.label.len() {
         for (j, horizontal) in [(s.canvas.right(i), true), (s.canvas.down(i), false)] {
             let Some(j) = j else { continue };
-            if under.contains(&i) || under.contains(&j) {
-                continue;
-            }
             if let (Some(a), Some(b)) = (s.patch_of(i), s.patch_of(j)) {
-                total += f64::from(s.seam_cost(i, j, horizontal, a, b));
+                let pixels_under =
+                    usize::from(under.contains(&i)) + usize::from(under.contains(&j));
+                totals[pixels_under] += f64::from(s.seam_cost(i, j, horizontal, a, b));
             }
         }
     }
-    total
+    totals
 }
 
 impl Synthesis {
@@ -466,4 +466,105 @@ fn a_single_patch_splines_to_itself_and_transforms_add_sources() {
         mean_scale(0..20),
         mean_scale(76..96)
     );
+}
+
+/// Patches laid down one by one over an output they only partly cover yet: each overlaps covered
+/// pixels and uncovered ones.
+const PARTIAL_COVER: [(i32, i32); 8] = [
+    (0, 0),
+    (7, 2),
+    (2, 8),
+    (12, 5),
+    (9, 11),
+    (16, 0),
+    (15, 12),
+    (0, 14),
+];
+
+/// Stored seam energy of the edges with both pixels under `patch`: what the cut that placed it
+/// decided. (An edge leaving the footprint keeps its old cost, or costs nothing when its inside
+/// pixel was uncovered, since no patch then shows both of its pixels.)
+fn stored_energy_under(s: &Synthesis, patch: Patch) -> f64 {
+    let under: std::collections::HashSet<usize> = s.footprint(patch).into_iter().collect();
+    let mut total = 0.0;
+    for &i in &under {
+        for (j, seams) in [
+            (s.canvas.right(i), &s.canvas.h_seam),
+            (s.canvas.down(i), &s.canvas.v_seam),
+        ] {
+            if j.is_some_and(|j| under.contains(&j)) {
+                total += f64::from(seams[i]);
+            }
+        }
+    }
+    total
+}
+
+#[test]
+fn while_the_output_is_being_covered_the_cut_equals_the_stored_seam_energy() {
+    let exemplar = noise(12, 12, 3, 1);
+    for gradient_cost in [false, true] {
+        let options = Options {
+            output_width: 26,
+            output_height: 22,
+            gradient_cost,
+            ..Options::default()
+        };
+        let mut s = Synthesis::new(&exemplar, options).unwrap();
+        for (tx, ty) in PARTIAL_COVER {
+            let patch = Patch { source: 0, tx, ty };
+            let placed = s.place(patch, &[], &[]).unwrap();
+            assert_pixels_match_labels(&s);
+            let stored = stored_energy_under(&s, patch);
+            assert!(
+                (placed.cut_cost - stored).abs() < 1e-4 * stored.max(1.0),
+                "M' {gradient_cost}, patch at ({tx}, {ty}): cut {} vs stored seam energy {stored}",
+                placed.cut_cost
+            );
+        }
+        assert!(!s.canvas.is_covered(), "the test is about a partial cover");
+    }
+}
+
+#[test]
+fn the_cut_is_not_biased_by_the_new_patch_brightness() {
+    // One texture, dark and bright: every colour difference between patches is the same, only
+    // the distance to the black of uncovered output pixels differs. Values are multiples of
+    // 2^-9, so both copies are exact and their costs equal bit for bit.
+    let mut rng = Rng::new(3);
+    let dark = Image::from_fn(12, 12, 3, |_, _, _| rng.index(256) as f32 / 512.0).unwrap();
+    let bright = Image::from_vec(12, 12, 3, dark.data().iter().map(|v| v + 0.5).collect()).unwrap();
+    let options = Options {
+        output_width: 26,
+        output_height: 22,
+        ..Options::default()
+    };
+    let mut a = Synthesis::new(&dark, options.clone()).unwrap();
+    let mut b = Synthesis::new(&bright, options).unwrap();
+    let (mut taken_dark, mut taken_bright) = (0, 0);
+    for (tx, ty) in PARTIAL_COVER {
+        let patch = Patch { source: 0, tx, ty };
+        let (pa, pb) = (
+            a.place(patch, &[], &[]).unwrap(),
+            b.place(patch, &[], &[]).unwrap(),
+        );
+        taken_dark += pa.pixels_taken;
+        taken_bright += pb.pixels_taken;
+        let differing = a
+            .canvas
+            .label
+            .iter()
+            .zip(&b.canvas.label)
+            .filter(|(x, y)| x != y)
+            .count();
+        assert!(
+            differing == 0 && pa.cut_cost == pb.cut_cost,
+            "patch at ({tx}, {ty}): {differing} pixels labelled differently; the bright patch \
+             took {} pixels, the dark one {} (so far {taken_bright} vs {taken_dark}); cut {} vs {}",
+            pb.pixels_taken,
+            pa.pixels_taken,
+            pb.cut_cost,
+            pa.cut_cost
+        );
+    }
 }

@@ -61,6 +61,50 @@ fn quadratic_energy_never_rises_within_a_level() {
     }
 }
 
+/// Runs the robust energy (r = 0.8, IRLS weights in the E-step) with `completeness` on four
+/// samples and checks that every level ends no higher than its first iteration: IRLS is not
+/// guaranteed to lower the energy at every iteration, but a level that ends above where it
+/// started has made the output worse by its own measure.
+fn assert_irls_levels_end_no_higher(completeness: f32) {
+    let defaults = Options::default();
+    assert_eq!(defaults.r, 0.8);
+    for name in ["gravel_64", "tiles_64", "sand_64", "brick_64"] {
+        let (_, events) = run(
+            &sample(name),
+            Options {
+                output_width: 96,
+                output_height: 96,
+                completeness,
+                ..Options::default()
+            },
+        );
+        for level in 0..events[0].level_count {
+            let energies: Vec<f64> = events
+                .iter()
+                .filter(|e| e.level == level)
+                .map(|e| e.energy)
+                .collect();
+            assert!(
+                energies.last() <= energies.first(),
+                "completeness {completeness}, {name} level {level}: {energies:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn paper_irls_energy_ends_each_level_no_higher_than_it_starts() {
+    assert_irls_levels_end_no_higher(0.0);
+}
+
+#[test]
+#[ignore = "fails today: with the occurrence penalty the energy alternates up and down between \
+            iterations, and gravel_64's first level ends 0.08% above its start \
+            (0.005862 -> 0.005866), without the penalty it falls; issue 10, point 5"]
+fn default_irls_energy_ends_each_level_no_higher_than_it_starts() {
+    assert_irls_levels_end_no_higher(Options::default().completeness);
+}
+
 #[test]
 fn same_seed_same_output_other_seed_other_output() {
     let exemplar = sample("tiles_64");

@@ -195,10 +195,16 @@ fn kmeans(
 ) -> Option<[usize; K]> {
     let n = space.vector_len();
     let weights = space.weights();
-    // Seeds: K distinct members chosen at random.
+    // Seeds: K distinct members chosen at random, drawn without replacement by a partial
+    // Fisher-Yates shuffle of `members` (reordered below anyway). A repeated seed would only
+    // leave its cluster empty. With fewer than K members, the extra seeds repeat the first ones.
+    for c in 0..K.min(members.len()) {
+        let pick = c + rng.index(members.len() - c);
+        members.swap(c, pick);
+    }
     for c in 0..K {
-        let pick = members[rng.index(members.len())];
-        space.copy_to(pick, &mut s.centroids[c * n..(c + 1) * n]);
+        let seed = members[c % members.len()];
+        space.copy_to(seed, &mut s.centroids[c * n..(c + 1) * n]);
     }
     s.assignment.clear();
     s.assignment.resize(members.len(), 0);
@@ -221,13 +227,13 @@ fn kmeans(
                 *sum += f64::from(v);
             }
         }
-        for c in 0..K {
-            if sizes[c] > 0 {
+        for (c, &size) in sizes.iter().enumerate() {
+            if size > 0 {
                 for (centroid, sum) in s.centroids[c * n..(c + 1) * n]
                     .iter_mut()
                     .zip(&s.sums[c * n..])
                 {
-                    *centroid = (*sum / sizes[c] as f64) as f32;
+                    *centroid = (*sum / size as f64) as f32;
                 }
             } else {
                 // An empty cluster takes a random member, so the next iteration can use it.
@@ -323,6 +329,19 @@ mod tests {
     }
 
     #[test]
+    fn k_different_neighbourhoods_split_into_k_single_leaves() {
+        // K members, all different, and leaves of one: distinct seeds give each member its own
+        // cluster at the first split. Seeds drawn with replacement repeat a member 91% of the
+        // time (1 - 4!/4^4), leaving a cluster empty.
+        let space = space(5, 5, 4);
+        assert_eq!(space.count(), K);
+        for seed in 0..64 {
+            let tree = KMeansTree::build_with_leaf_limit(&space, 1, &mut Rng::new(seed));
+            assert_eq!(tree.leaf_sizes(), [1; K], "seed {seed}");
+        }
+    }
+
+    #[test]
     fn a_flat_exemplar_does_not_recurse_forever() {
         let flat = Neighbourhoods::new(
             FeatureMap {
@@ -335,6 +354,6 @@ mod tests {
         );
         let tree = KMeansTree::build(&flat, &mut Rng::new(0));
         assert_eq!(tree.leaf_sizes(), vec![flat.count()]);
-        assert_eq!(tree.nearest(&flat, &vec![0.5; 16]).1, 0.0);
+        assert_eq!(tree.nearest(&flat, &[0.5; 16]).1, 0.0);
     }
 }
