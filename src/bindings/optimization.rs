@@ -27,6 +27,7 @@ const KNOWN: &[&str] = &[
     "search",
     "tileable",
     "completeness",
+    "histogramMatching",
 ];
 
 /// Reads the options object; absent keys keep the defaults of [`Options`].
@@ -66,6 +67,9 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
         completeness: js
             .number("completeness")?
             .map_or(d.completeness, |v| v as f32),
+        histogram_matching: js
+            .number("histogramMatching")?
+            .map_or(d.histogram_matching, |v| v as f32),
     })
 }
 

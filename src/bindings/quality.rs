@@ -9,7 +9,7 @@ use crate::core::from_rgba8;
 use crate::methods::quality::quality;
 
 /// Scores an output (RGBA8 pixels, e.g. what a session rendered) against its exemplar:
-/// `{ coherence, completeness, histogram }`, all lower-is-better (see the README).
+/// `{ coherence, completeness, histogram, flat }`, all lower-is-better (see the README).
 #[wasm_bindgen(js_name = measureQuality)]
 pub fn measure_quality(
     exemplar: &Exemplar,
@@ -23,5 +23,6 @@ pub fn measure_quality(
         ("coherence", q.coherence.into()),
         ("completeness", q.completeness.into()),
         ("histogram", q.histogram.into()),
+        ("flat", q.flat.into()),
     ]))
 }

@@ -64,6 +64,8 @@ pub struct LevelSolver {
     /// Constrained queries and their weights (empty until a constraint is used).
     constrained: Vec<f32>,
     constrained_weights: Vec<f32>,
+    /// The exemplar coverage the last occurrence penalty used (empty before).
+    coverage: Vec<f64>,
 }
 
 impl LevelSolver {
@@ -91,6 +93,7 @@ impl LevelSolver {
             objective: vec![f32::INFINITY; nodes],
             constrained: Vec::new(),
             constrained_weights: Vec::new(),
+            coverage: Vec::new(),
             setup,
             matcher,
             cols,
@@ -204,6 +207,10 @@ impl LevelSolver {
             rows: &self.rows,
         };
         let occurrence = self.occurrence();
+        if let Some(o) = &occurrence {
+            self.coverage.clear();
+            self.coverage.extend_from_slice(o.coverage());
+        }
         let penalty = occurrence.as_ref().map(|o| move |z: Pos| o.penalty(z));
         let mut objective = Objective {
             weights: None,
@@ -280,12 +287,19 @@ impl LevelSolver {
             ex.width * ex.height,
             self.setup.output_width * self.setup.output_height,
         );
-        Some(Occurrence::new(
+        // Every node sees the same coverage in an M-step, so the nodes on an over-used part
+        // of the exemplar all leave it at once for the same under-used part, which is then
+        // over-used: matches and energy see-saw from one iteration to the next. Averaging the
+        // coverage with the last M-step's damps the swing (paving_128: 3430 -> 1746 matches
+        // changed in the last iteration, and the energy falls at every iteration).
+        let remembered = (!self.coverage.is_empty()).then_some(self.coverage.as_slice());
+        Some(Occurrence::remembering(
             &self.matches,
             self.setup.size,
             ex.width,
             ex.height,
             alpha * share * mean as f32,
+            remembered,
         ))
     }
 

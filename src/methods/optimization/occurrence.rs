@@ -32,6 +32,8 @@ pub fn strength(exemplar_area: usize, output_area: usize) -> f32 {
 pub struct Occurrence {
     /// Summed-area table of the coverage, `(width + 1) * (height + 1)`.
     table: Vec<f64>,
+    /// Neighbourhoods covering each exemplar pixel, `width * height`.
+    coverage: Vec<f64>,
     width: usize,
     size: usize,
     /// Penalty per unit of over-use: alpha * mean distance.
@@ -45,6 +47,20 @@ impl Occurrence {
     /// `scale` is alpha times the mean distance of the matches.
     #[must_use]
     pub fn new(matches: &[Pos], size: usize, width: usize, height: usize, scale: f32) -> Self {
+        Self::remembering(matches, size, width, height, scale, None)
+    }
+
+    /// Like [`Occurrence::new`], with the coverage averaged with `previous` (the coverage of
+    /// the last M-step) when given.
+    #[must_use]
+    pub fn remembering(
+        matches: &[Pos],
+        size: usize,
+        width: usize,
+        height: usize,
+        scale: f32,
+        previous: Option<&[f64]>,
+    ) -> Self {
         debug_assert!(scale >= 0.0);
         // Each match adds 1 over its window: a 2-D difference array, then prefix sums.
         let stride = width + 1;
@@ -69,6 +85,11 @@ impl Occurrence {
                     };
             }
         }
+        if let Some(previous) = previous {
+            for (c, &p) in coverage.iter_mut().zip(previous) {
+                *c = 0.5 * (*c + p);
+            }
+        }
         let mut table = vec![0.0f64; stride * (height + 1)];
         for y in 0..height {
             let mut run = 0.0;
@@ -81,11 +102,19 @@ impl Occurrence {
             (matches.len() * size * size) as f64 / (width * height) as f64 * (size * size) as f64;
         Occurrence {
             table,
+            coverage,
             width,
             size,
             scale,
             inv_even: if even > 0.0 { 1.0 / even } else { 0.0 },
         }
+    }
+
+    /// Neighbourhoods covering each exemplar pixel (averaged with the previous coverage when
+    /// remembering).
+    #[must_use]
+    pub fn coverage(&self) -> &[f64] {
+        &self.coverage
     }
 
     /// Sum of the coverage over the window at `z`.

@@ -3,6 +3,7 @@
 
 use super::constraints::{Constraint, SoftConstraints};
 use super::e_step::edge;
+use super::histogram::SortedChannels;
 use super::initial::random_patches;
 use super::level::{LevelSetup, LevelSolver, fit_output};
 use super::m_step::PATCHMATCH_PASSES;
@@ -73,6 +74,9 @@ pub struct Session {
     constraint: Option<Constraint>,
     history: Vec<EnergyPoint>,
     last: Option<Event>,
+    /// The sorted exemplar values per octave, for histogram matching, and its scratch space.
+    histograms: Vec<SortedChannels>,
+    order: Vec<u32>,
 }
 
 impl Session {
@@ -82,7 +86,10 @@ impl Session {
         let levels = plan(exemplar.width(), exemplar.height(), &options)?;
         let octaves = levels.iter().map(|l| l.octave).max().unwrap_or(0) + 1;
         let exemplars = gaussian_pyramid(exemplar, octaves, Edge::Clamp)?;
+        let histograms = exemplars.iter().map(SortedChannels::new).collect();
         Ok(Session {
+            histograms,
+            order: Vec::new(),
             rng: Rng::new(options.seed),
             options,
             levels,
@@ -299,35 +306,25 @@ impl Session {
         let constraint = self.constraint.as_ref();
         if self.output.is_none() {
             // The coarsest level starts from random exemplar patches (see [`random_patches`]).
-            let block = std::env::var("INIT_BLOCK").ok().map_or(lv.size, |v| v.parse().unwrap());
-            if block > 0 {
-                self.output = Some(random_patches(
-                    exemplar,
-                    lv.output_width,
-                    lv.output_height,
-                    block,
-                    &mut self.rng,
-                )?);
-                self.fresh = true;
-            }
+            self.output = Some(random_patches(
+                exemplar,
+                lv.output_width,
+                lv.output_height,
+                lv.size,
+                &mut self.rng,
+            )?);
+            self.fresh = true;
         }
         if self.fresh {
             let out = self.output.as_ref().expect("fresh levels have an output");
             solver.m_step(out, constraint, &mut self.rng);
             self.fresh = false;
         }
-        let output = match &mut self.output {
-            Some(out) => out,
-            none => none.insert(Image::new(
-                lv.output_width,
-                lv.output_height,
-                exemplar.channels(),
-            )?),
-        };
+        let output = self.output.as_mut().expect("made above");
         solver.e_step(exemplar, output, constraint);
-        let hist: f32 = std::env::var("HIST").ok().map_or(0.0, |v| v.parse().unwrap());
-        if hist > 0.0 {
-            super::histogram::SortedChannels::new(exemplar).match_histogram(output, hist, &mut Vec::new());
+        if self.options.histogram_matching > 0.0 {
+            let histogram = &self.histograms[lv.octave];
+            histogram.match_histogram(output, self.options.histogram_matching, &mut self.order);
         }
         Ok(solver.m_step(output, constraint, &mut self.rng))
     }
