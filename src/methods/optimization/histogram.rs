@@ -31,14 +31,23 @@ impl SortedChannels {
     }
 
     /// Moves every value of `output` towards the exemplar value of the same rank, by `strength`
-    /// (0 leaves it, 1 matches the histograms exactly). `order` is scratch space.
-    pub fn match_histogram(&self, output: &mut Image, strength: f32, order: &mut Vec<u32>) {
+    /// (0 leaves it, 1 matches the histograms exactly). Pixels where `fixed` is above 0 (the
+    /// soft constraints' mask: the user's colours, which need not be the exemplar's) keep their
+    /// values and are left out of the ranking. `order` is scratch space.
+    pub fn match_histogram(
+        &self,
+        output: &mut Image,
+        strength: f32,
+        fixed: Option<&[f32]>,
+        order: &mut Vec<u32>,
+    ) {
         let c = output.channels();
-        let n = output.pixel_count();
+        let free = |i: usize| fixed.is_none_or(|f| f[i] <= 0.0);
         let data = output.data_mut();
         for (k, target) in self.channels.iter().enumerate().take(c) {
             order.clear();
-            order.extend(0..n as u32);
+            order.extend((0..data.len() / c).filter(|&i| free(i)).map(|i| i as u32));
+            let n = order.len();
             order.sort_unstable_by(|&a, &b| {
                 data[a as usize * c + k].total_cmp(&data[b as usize * c + k])
             });
@@ -61,9 +70,9 @@ mod tests {
     #[test]
     fn full_strength_gives_the_exemplar_histogram_and_keeps_the_order() {
         let ex = noise(16, 16, 3, 1);
-        let mut out = Image::from_fn(32, 8, 3, |x, y, k| 0.4 + 0.001 * (x + 40 * y + k) as f32).unwrap();
+        let mut out = Image::from_fn(32, 16, 3, |x, y, k| 0.4 + 0.001 * (x + 40 * y + k) as f32).unwrap();
         let before = out.clone();
-        SortedChannels::new(&ex).match_histogram(&mut out, 1.0, &mut Vec::new());
+        SortedChannels::new(&ex).match_histogram(&mut out, 1.0, None, &mut Vec::new());
         for k in 0..3 {
             let mut a: Vec<f32> = ex.data().iter().skip(k).step_by(3).copied().collect();
             let mut b: Vec<f32> = out.data().iter().skip(k).step_by(3).copied().collect();
@@ -78,7 +87,14 @@ mod tests {
         let (p, q) = (before.pixel(3, 2)[0], before.pixel(9, 5)[0]);
         assert!(p < q && out.pixel(3, 2)[0] <= out.pixel(9, 5)[0]);
         let mut same = before.clone();
-        SortedChannels::new(&ex).match_histogram(&mut same, 0.0, &mut Vec::new());
+        SortedChannels::new(&ex).match_histogram(&mut same, 0.0, None, &mut Vec::new());
         assert_eq!(same, before);
+        // Fixed pixels keep their values.
+        let mut fixed = vec![0.0; 32 * 16];
+        fixed[5] = 1.0;
+        let mut partly = before.clone();
+        SortedChannels::new(&ex).match_histogram(&mut partly, 1.0, Some(&fixed), &mut Vec::new());
+        assert_eq!(partly.pixel(5, 0), before.pixel(5, 0));
+        assert_ne!(partly.pixel(6, 0), before.pixel(6, 0));
     }
 }

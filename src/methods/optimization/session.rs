@@ -324,7 +324,8 @@ impl Session {
         solver.e_step(exemplar, output, constraint);
         if self.options.histogram_matching > 0.0 {
             let histogram = &self.histograms[lv.octave];
-            histogram.match_histogram(output, self.options.histogram_matching, &mut self.order);
+            let fixed = constraint.map(|c| c.mask.as_slice());
+            histogram.match_histogram(output, self.options.histogram_matching, fixed, &mut self.order);
         }
         Ok(solver.m_step(output, constraint, &mut self.rng))
     }
