@@ -12,7 +12,9 @@ use texsynth::methods::optimization::{EventKind, Options, Session};
 use texsynth::methods::quality::quality;
 
 fn env_f32(name: &str) -> Option<f32> {
-    std::env::var(name).ok().map(|v| v.parse().expect("a number"))
+    std::env::var(name)
+        .ok()
+        .map(|v| v.parse().expect("a number"))
 }
 
 fn options(size: usize, seed: u64) -> Options {
@@ -58,7 +60,10 @@ fn main() {
         .filter(|n| filter.is_empty() || filter.split(',').any(|f| n.starts_with(f)))
         .collect();
     names.sort_by_key(|n| (n.ends_with("_64"), n.clone()));
-    println!("{:<14} {:>7} {:>10} {:>12} {:>9} {:>8}", "exemplar", "flat", "coherence", "completeness", "histogram", "ms");
+    println!(
+        "{:<14} {:>7} {:>10} {:>12} {:>9} {:>8}",
+        "exemplar", "flat", "coherence", "completeness", "histogram", "ms"
+    );
     let mut rows: Vec<(String, f64)> = Vec::new();
     let mut sheet: Vec<(bool, Image)> = Vec::new();
     for name in &names {
@@ -85,8 +90,14 @@ fn main() {
                     };
                     println!(
                         "  level {} octave {} size {:>2} it {} energy {:.5} changed {:>5} flat {:.3}{}",
-                        event.level, event.octave, event.size, event.iteration, event.energy,
-                        event.changed, flat, if end_of_level { " *" } else { "" }
+                        event.level,
+                        event.octave,
+                        event.size,
+                        event.iteration,
+                        event.energy,
+                        event.changed,
+                        flat,
+                        if end_of_level { " *" } else { "" }
                     );
                 }
                 if event.kind == EventKind::Done {
@@ -121,9 +132,17 @@ fn main() {
             .map(|r| r.1)
             .fold(0.0f64, f64::max)
     };
-    println!("worst flat: 128 {:.3}, 64 {:.3}", worst("_128"), worst("_64"));
+    println!(
+        "worst flat: 128 {:.3}, 64 {:.3}",
+        worst("_128"),
+        worst("_64")
+    );
     if let Ok(path) = std::env::var("SHEET") {
-        let per_row = sheet.iter().filter(|s| !s.0).count().max(sheet.iter().filter(|s| s.0).count());
+        let per_row = sheet
+            .iter()
+            .filter(|s| !s.0)
+            .count()
+            .max(sheet.iter().filter(|s| s.0).count());
         let rows_n = 1 + usize::from(sheet.iter().any(|s| s.0) && sheet.iter().any(|s| !s.0));
         let (cw, ch) = (per_row * (size + 4), rows_n * (size + 4));
         let mut canvas = Image::from_fn(cw, ch, 3, |_, _, _| 1.0).unwrap();

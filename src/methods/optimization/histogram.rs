@@ -70,7 +70,8 @@ mod tests {
     #[test]
     fn full_strength_gives_the_exemplar_histogram_and_keeps_the_order() {
         let ex = noise(16, 16, 3, 1);
-        let mut out = Image::from_fn(32, 16, 3, |x, y, k| 0.4 + 0.001 * (x + 40 * y + k) as f32).unwrap();
+        let mut out =
+            Image::from_fn(32, 16, 3, |x, y, k| 0.4 + 0.001 * (x + 40 * y + k) as f32).unwrap();
         let before = out.clone();
         SortedChannels::new(&ex).match_histogram(&mut out, 1.0, None, &mut Vec::new());
         for k in 0..3 {

@@ -26,7 +26,8 @@ pub fn random_patches(
             let (sx, sy) = (rng.index(ew - block + 1), rng.index(eh - block + 1));
             let (bw, bh) = (block.min(width - bx), block.min(height - by));
             for dy in 0..bh {
-                let src = &exemplar.data()[((sy + dy) * ew + sx) * c..((sy + dy) * ew + sx + bw) * c];
+                let src =
+                    &exemplar.data()[((sy + dy) * ew + sx) * c..((sy + dy) * ew + sx + bw) * c];
                 let start = ((by + dy) * width + bx) * c;
                 out.data_mut()[start..start + bw * c].copy_from_slice(src);
             }
@@ -41,7 +42,8 @@ mod tests {
 
     #[test]
     fn every_block_is_a_window_of_the_exemplar() {
-        let ex = Image::from_fn(20, 16, 2, |x, y, k| (100 * y + x) as f32 + 0.5 * k as f32).unwrap();
+        let ex =
+            Image::from_fn(20, 16, 2, |x, y, k| (100 * y + x) as f32 + 0.5 * k as f32).unwrap();
         let out = random_patches(&ex, 23, 13, 6, &mut Rng::new(3)).unwrap();
         for by in (0..13).step_by(6) {
             for bx in (0..23).step_by(6) {

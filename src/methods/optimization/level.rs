@@ -304,8 +304,14 @@ impl LevelSolver {
     }
 
     /// The E-step: replaces `output` (this level's size) by the minimiser of the IRLS-weighted
-    /// texture energy for the current matches, plus the constraint's term when given.
-    pub fn e_step(&self, exemplar: &Image, output: &mut Image, constraint: Option<&Constraint>) {
+    /// texture energy for the current matches, plus the constraint's term when given. Returns
+    /// the conjugate-gradient iterations of the gradient solve (0 without the gradient energy).
+    pub fn e_step(
+        &self,
+        exemplar: &Image,
+        output: &mut Image,
+        constraint: Option<&Constraint>,
+    ) -> usize {
         let r = self.setup.r;
         // IRLS: weights from the last distances (all 1 before the first M-step).
         let weights: Vec<f32> = self
@@ -330,7 +336,7 @@ impl LevelSolver {
             wrap: self.setup.wrap,
             mu: self.setup.mu,
         };
-        e_step(&m, output, constraint);
+        e_step(&m, output, constraint)
     }
 
     /// The texture energy sum_p d_p^(r/2), normalised by the number of neighbourhoods and the

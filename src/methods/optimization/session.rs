@@ -44,6 +44,9 @@ pub struct Event {
     pub changed: usize,
     /// Total EM iterations so far.
     pub total_iterations: usize,
+    /// Conjugate-gradient iterations of this step's gradient-energy solve (0 when mu = 0); it
+    /// stops at a relative residual of [`CG_TOLERANCE`](super::e_step::CG_TOLERANCE).
+    pub solver_iterations: usize,
 }
 
 /// One point of the energy history.
@@ -77,6 +80,8 @@ pub struct Session {
     /// The sorted exemplar values per octave, for histogram matching, and its scratch space.
     histograms: Vec<SortedChannels>,
     order: Vec<u32>,
+    /// CG iterations of the last E-step.
+    solver_iterations: usize,
 }
 
 impl Session {
@@ -90,6 +95,7 @@ impl Session {
         Ok(Session {
             histograms,
             order: Vec::new(),
+            solver_iterations: 0,
             rng: Rng::new(options.seed),
             options,
             levels,
@@ -246,6 +252,7 @@ impl Session {
             energy,
             changed,
             total_iterations: self.history.len(),
+            solver_iterations: self.solver_iterations,
         };
         // Converged: no match changed (Algorithm 1's test), or the cap is reached.
         if changed == 0 || self.iteration >= self.options.iterations {
@@ -321,11 +328,16 @@ impl Session {
             self.fresh = false;
         }
         let output = self.output.as_mut().expect("made above");
-        solver.e_step(exemplar, output, constraint);
+        self.solver_iterations = solver.e_step(exemplar, output, constraint);
         if self.options.histogram_matching > 0.0 {
             let histogram = &self.histograms[lv.octave];
             let fixed = constraint.map(|c| c.mask.as_slice());
-            histogram.match_histogram(output, self.options.histogram_matching, fixed, &mut self.order);
+            histogram.match_histogram(
+                output,
+                self.options.histogram_matching,
+                fixed,
+                &mut self.order,
+            );
         }
         Ok(solver.m_step(output, constraint, &mut self.rng))
     }

@@ -403,3 +403,54 @@ fn quality_against_completeness_weight() {
         }
     }
 }
+
+/// The flat fraction (see [`crate::methods::quality::detail`]) of a default run, with `mu`,
+/// from a 64-pixel sample with large smooth areas to 160x160. Without histogram matching
+/// (`histogram_matching: 0`) paving_64 scores 0.81 here, and 0.997 with mu = 10.
+fn flat_fraction(name: &str, mu: f32) -> f64 {
+    let exemplar = sample(name);
+    let (session, _) = run(
+        &exemplar,
+        Options {
+            output_width: 160,
+            output_height: 160,
+            mu,
+            ..Options::default()
+        },
+    );
+    let output = session.output_full_size().unwrap();
+    crate::methods::quality::quality(&exemplar, &output)
+        .unwrap()
+        .flat
+}
+
+#[test]
+fn no_wash_out_with_default_options() {
+    for name in ["paving_64", "stone_64", "dirt_64", "potatoes_64"] {
+        let flat = flat_fraction(name, 0.0);
+        assert!(flat <= 0.25, "{name}: flat fraction {flat}");
+    }
+}
+
+#[test]
+fn no_wash_out_with_the_gradient_energy_and_its_solve_converges() {
+    for name in ["paving_64", "stone_64"] {
+        let flat = flat_fraction(name, 10.0);
+        assert!(flat <= 0.25, "{name}, mu 10: flat fraction {flat}");
+    }
+    let (_, events) = run(
+        &sample("gravel_64"),
+        Options {
+            output_width: 96,
+            output_height: 96,
+            mu: 10.0,
+            ..Options::default()
+        },
+    );
+    for e in &events {
+        assert!(
+            (1..super::e_step::CG_MAX_ITERATIONS).contains(&e.solver_iterations),
+            "{e:?}"
+        );
+    }
+}

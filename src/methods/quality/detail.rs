@@ -49,7 +49,8 @@ pub fn local_contrast(rgb: &Image) -> Vec<f32> {
         }
     }
     let area = |t: &[f64], x: usize, y: usize| {
-        t[(y + WINDOW) * stride + x + WINDOW] - t[y * stride + x + WINDOW]
+        t[(y + WINDOW) * stride + x + WINDOW]
+            - t[y * stride + x + WINDOW]
             - t[(y + WINDOW) * stride + x]
             + t[y * stride + x]
     };
