@@ -28,6 +28,7 @@ const KNOWN: &[&str] = &[
     "r",
     "tileable",
     "flow",
+    "histogramMatching",
 ];
 
 const COMPONENT_KEYS: &[&str] = &[
@@ -153,6 +154,9 @@ fn read_options(value: &JsValue) -> JsResult<(FlowOptions, FlowSource)> {
             .integer("frames", 0, 1 << 32)?
             .map_or(d.frames, |v| v as usize),
         lambda: js.number("lambda")?.map_or(d.lambda, |v| v as f32),
+        histogram_matching: js
+            .number("histogramMatching")?
+            .map_or(d.histogram_matching, |v| v as f32),
         frame_sizes: js
             .integers("frameSizes", 0, 1 << 20)?
             .map_or(d.frame_sizes, |v| {

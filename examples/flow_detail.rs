@@ -1,0 +1,74 @@
+//! Do flow frames keep their detail? `cargo run --profile explore --example flow_detail --
+//! [SAMPLE] [SIZE] [FRAMES]` (defaults: the page's `tiles_128 256 60`, a vortex of strength 2).
+//! Prints frame 1's flat fraction, coherence and flow energy, the means over frames 30-60 and
+//! their ratios to frame 1; `WRITE=dir` writes frames 1 and the last as PNGs.
+
+use texsynth::core::{decode, encode_png};
+use texsynth::methods::flow::{
+    Component, FlowEventKind, FlowKind, FlowOptions, FlowSession, FlowSource, FlowSpec,
+};
+use texsynth::methods::quality::quality;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let name = args.first().map_or("tiles_128", String::as_str);
+    let size: usize = args.get(1).map_or(256, |s| s.parse().expect("size"));
+    let frames: usize = args.get(2).map_or(60, |s| s.parse().expect("frames"));
+    let path = format!("{}/www/samples/{name}.png", env!("CARGO_MANIFEST_DIR"));
+    let exemplar = decode(&std::fs::read(path).expect("sample")).expect("decodes");
+    let flow = FlowSource::Generator(
+        FlowSpec::new(vec![Component::new(FlowKind::Vortex, 2.0)]).expect("spec"),
+    );
+    let options = FlowOptions {
+        output_width: size,
+        output_height: size,
+        frames,
+        histogram_matching: std::env::var("HIST").map_or(1.0, |v| v.parse().expect("number")),
+        lambda: std::env::var("LAMBDA").map_or(0.2, |v| v.parse().expect("number")),
+        frame_iterations: std::env::var("FRAME_ITERATIONS")
+            .map_or(3, |v| v.parse().expect("number")),
+        ..FlowOptions::default()
+    };
+    let mut session = FlowSession::new(&exemplar, flow, options).expect("session");
+    let start = std::time::Instant::now();
+    let mut rows = Vec::new();
+    loop {
+        let event = session.step().expect("step");
+        if matches!(event.kind, FlowEventKind::Frame | FlowEventKind::Done) {
+            let frame = session.frame_image().expect("frame");
+            let index = session.frame();
+            if index <= 6 || index >= 30 || index % 10 == 0 {
+                let q = quality(&exemplar, &frame).expect("quality");
+                rows.push((index, q.flat, q.coherence, event.flow_energy));
+                let naive =
+                    quality(&exemplar, &session.naive_image().expect("naive")).expect("quality");
+                println!(
+                    "frame {index:>3}: flat {:.3} coherence {:.5} flow energy {:.5} (naive warp: flat {:.3} coherence {:.5})",
+                    q.flat, q.coherence, event.flow_energy, naive.flat, naive.coherence
+                );
+            }
+            if let Ok(dir) = std::env::var("WRITE") {
+                if index == 1 || index == frames {
+                    let png = encode_png(&frame).expect("png");
+                    std::fs::write(format!("{dir}/{name}-{size}-frame{index}.png"), png)
+                        .expect("write");
+                }
+            }
+        }
+        if event.kind == FlowEventKind::Done {
+            break;
+        }
+    }
+    let later: Vec<_> = rows.iter().filter(|r| r.0 >= 30).collect();
+    let mean = |f: fn(&(usize, f64, f64, f64)) -> f64| {
+        later.iter().map(|r| f(r)).sum::<f64>() / later.len() as f64
+    };
+    let first = rows[0];
+    let (flat, coherence, flow) = (mean(|r| r.1), mean(|r| r.2), mean(|r| r.3));
+    println!(
+        "{name} {size}x{size}: frames 30-{frames} mean flat {flat:.3} ({:.2}x frame 1), coherence {coherence:.5} ({:.2}x), flow energy {flow:.5}; {:.1} s",
+        flat / first.1,
+        coherence / first.2,
+        start.elapsed().as_secs_f64()
+    );
+}
