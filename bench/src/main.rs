@@ -149,10 +149,11 @@ fn write_sheet(
         let quality = m.runs.iter().find(|r| r.seed == args.seeds[0]);
         let note = match (m.first_ms, quality) {
             (Some(ms), Some(q)) => format!(
-                "{} ms coh {} cmp {}",
+                "{} ms coh {} cmp {} flat {}",
                 table::ms(Some(ms)),
                 table::metric(Some(q.coherence)),
-                table::metric(Some(q.completeness))
+                table::metric(Some(q.completeness)),
+                table::flat(Some(q.flat))
             ),
             _ => "failed".into(),
         };

@@ -119,6 +119,7 @@ pub fn run_exemplar(
             coherence: q.coherence,
             completeness: q.completeness,
             histogram: q.histogram,
+            flat: q.flat,
             output_hash,
             wasm_ms: None,
             wasm_steps: None,

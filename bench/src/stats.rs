@@ -14,6 +14,8 @@ pub struct RunFigures {
     pub coherence: f64,
     pub completeness: f64,
     pub histogram: f64,
+    /// Flat fraction (the detail metric): about 0.10 for the exemplar itself.
+    pub flat: f64,
     /// FNV-1a of the output's RGBA8 pixels (native).
     pub output_hash: String,
     pub wasm_ms: Option<f64>,
@@ -34,6 +36,7 @@ pub struct Cell {
     pub coherence: Option<f64>,
     pub completeness: Option<f64>,
     pub histogram: Option<f64>,
+    pub flat: Option<f64>,
     pub wasm_identical: Option<bool>,
 }
 
@@ -45,6 +48,7 @@ pub struct Ratios {
     pub coherence: Option<f64>,
     pub completeness: Option<f64>,
     pub histogram: Option<f64>,
+    pub flat: Option<f64>,
 }
 
 /// The goal of the issue: at least 3x faster than the peer with coherence and completeness no
@@ -97,6 +101,7 @@ pub fn cell(runs: &[RunFigures]) -> Cell {
         coherence: mean(&of(|r| Some(r.coherence))),
         completeness: mean(&of(|r| Some(r.completeness))),
         histogram: mean(&of(|r| Some(r.histogram))),
+        flat: mean(&of(|r| Some(r.flat))),
         wasm_identical: (!identical.is_empty()).then(|| identical.iter().all(|&b| b)),
     }
 }
@@ -115,6 +120,7 @@ pub fn summary(cells: &[&Cell]) -> Cell {
         coherence: of(|c| c.coherence),
         completeness: of(|c| c.completeness),
         histogram: of(|c| c.histogram),
+        flat: of(|c| c.flat),
         wasm_identical: (!identical.is_empty()).then(|| identical.iter().all(|&b| b)),
     }
 }
@@ -130,6 +136,7 @@ pub fn ratios(ours: &Cell, peer: &Cell) -> Ratios {
         coherence: div(ours.coherence, peer.coherence),
         completeness: div(ours.completeness, peer.completeness),
         histogram: div(ours.histogram, peer.histogram),
+        flat: div(ours.flat, peer.flat),
     }
 }
 
@@ -144,6 +151,7 @@ pub fn ratio_summary(all: &[&Ratios]) -> Ratios {
         coherence: of(|r| r.coherence),
         completeness: of(|r| r.completeness),
         histogram: of(|r| r.histogram),
+        flat: of(|r| r.flat),
     }
 }
 
@@ -160,6 +168,7 @@ mod tests {
             coherence,
             completeness: 2.0 * coherence,
             histogram: 0.01,
+            flat: 0.1,
             output_hash: String::new(),
             wasm_ms: Some(2.0 * ms),
             wasm_steps: Some(steps),

@@ -92,6 +92,11 @@ pub fn metric(v: Option<f64>) -> String {
     }
 }
 
+/// A flat fraction (0..1), to three decimals.
+pub fn flat(v: Option<f64>) -> String {
+    v.map_or(NONE.into(), |v| format!("{v:.3}"))
+}
+
 /// A ratio method/peer, two significant digits at least.
 pub fn ratio(v: Option<f64>) -> String {
     match v {
