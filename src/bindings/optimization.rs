@@ -91,6 +91,7 @@ fn event_object(e: &Event) -> JsValue {
         ("energy", e.energy.into()),
         ("changed", (e.changed as u32).into()),
         ("totalIterations", (e.total_iterations as u32).into()),
+        ("solverIterations", (e.solver_iterations as u32).into()),
     ])
 }
 
@@ -115,7 +116,8 @@ impl TextureOptimization {
     }
 
     /// Runs one EM iteration. Returns `{ kind: 'level' | 'iteration' | 'done', done, level,
-    /// levelCount, octave, scale, neighbourhoodSize, iteration, energy, changed, totalIterations }`.
+    /// levelCount, octave, scale, neighbourhoodSize, iteration, energy, changed, totalIterations,
+    /// solverIterations }` (solverIterations: the gradient solve's conjugate-gradient iterations).
     pub fn step(&mut self) -> JsResult<JsValue> {
         Ok(event_object(&self.session.step()?))
     }

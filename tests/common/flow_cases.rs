@@ -106,6 +106,11 @@ fn bad_flows_and_options_are_named_errors() {
     assert!(msg.contains("flow"), "{msg}");
     let msg = error_message(FlowAnimation::new(&ex, options(&[("lambda", (-1).into())])));
     assert!(msg.contains("lambda"), "{msg}");
+    let msg = error_message(FlowAnimation::new(
+        &ex,
+        options(&[("histogramMatching", f64::NAN.into())]),
+    ));
+    assert!(msg.contains("histogramMatching"), "{msg}");
     let msg = error_message(FlowAnimation::new(&ex, options(&[("speed", 1.into())])));
     assert!(msg.contains("speed"), "{msg}");
     let msg = error_message(flow_field(JsValue::NULL, 8, 8, 0));

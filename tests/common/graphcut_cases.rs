@@ -131,6 +131,11 @@ fn quality_of_a_rendered_output() {
         completeness < flat_completeness / 10.0,
         "completeness {completeness}, a flat image {flat_completeness}"
     );
+    // The detail metric: the flat image is flat everywhere, graph cut's output about as often
+    // as the exemplar itself (0.10).
+    assert_eq!(get(&flat, "flat").as_f64().unwrap(), 1.0);
+    let detail = get(&q, "flat").as_f64().unwrap();
+    assert!(detail < 0.25, "flat fraction {detail}");
     assert!(error_message(measure_quality(&ex, &[0; 10], 64, 64)).contains("RGBA pixel data"));
     assert!(error_message(measure_quality(&ex, &[0; 4 * 16], 4, 4)).contains("output size 4x4"));
 }

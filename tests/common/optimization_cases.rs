@@ -25,6 +25,8 @@ fn a_session_steps_renders_and_finishes() {
     let first = session.step().unwrap();
     assert_eq!(get(&first, "kind").as_string().unwrap(), "level");
     assert!(get(&first, "energy").as_f64().unwrap() > 0.0);
+    // No gradient energy by default: no Poisson solve.
+    assert_eq!(get(&first, "solverIterations").as_f64().unwrap(), 0.0);
     let target = Uint8ClampedArray::new_with_length(48 * 40 * 4);
     session.render_into(&target).unwrap();
     let before = target.to_vec();
@@ -101,6 +103,7 @@ fn bad_options_are_errors_that_name_them() {
     );
     assert!(msg(&[("r", f64::NAN.into())]).contains("invalid r"));
     assert!(msg(&[("mu", "ten".into())]).contains("invalid mu"));
+    assert!(msg(&[("histogramMatching", 2.into())]).contains("invalid histogramMatching"));
     assert!(msg(&[("seed", (-1).into())]).contains("invalid seed"));
     assert!(msg(&[("search", "fast".into())]).contains("invalid search"));
     assert!(msg(&[("neighbourhoodSizes", 8.into())]).contains("neighbourhoodSizes"));

@@ -72,5 +72,5 @@ export const qualityInPage = (page, sample, pixels, width, height) =>
     }
     const q = wasm.measureQuality(exemplar, rgba, width, height);
     exemplar.free();
-    return { coherence: q.coherence, completeness: q.completeness, histogram: q.histogram };
+    return { coherence: q.coherence, completeness: q.completeness, histogram: q.histogram, flat: q.flat };
   }, { sample, pixels, width, height });

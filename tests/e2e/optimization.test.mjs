@@ -58,6 +58,11 @@ test('stepping redraws, running reaches done, the plot has points', async () => 
     output.completeness < flat.completeness / 10,
     `completeness ${output.completeness}, flat ${flat.completeness}`,
   );
+  // The detail metric in the readout: a flat image scores 1, the exemplar itself about 0.10.
+  assert.match(await page.textContent('#to-quality'), /flat \d+\.\d% \(the exemplar itself: about 10%\)/);
+  const detail = Number(await page.getAttribute('#to-quality', 'data-flat'));
+  assert.equal(flat.flat, 1);
+  assert.ok(detail < 0.25, `flat fraction ${detail}`);
   await page.screenshot({ path: `${RESULTS}/optimization.png`, fullPage: true });
 
   await page.check('#to-teaching');

@@ -8,6 +8,8 @@ export function showQuality(element, exemplar, session) {
   const q = measureQuality(exemplar, image.data, session.width, session.height);
   element.textContent =
     `quality (lower is better): coherence ${q.coherence.toExponential(2)} · ` +
-    `completeness ${q.completeness.toExponential(2)} · histogram ${q.histogram.toExponential(2)}`;
+    `completeness ${q.completeness.toExponential(2)} · histogram ${q.histogram.toExponential(2)} · ` +
+    `flat ${(100 * q.flat).toFixed(1)}% (the exemplar itself: about 10%)`;
   element.dataset.coherence = String(q.coherence);
+  element.dataset.flat = String(q.flat);
 }
