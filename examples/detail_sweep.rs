@@ -1,8 +1,10 @@
 //! Texture optimization over a folder of exemplars with every quality metric, the flat fraction
 //! first: `cargo run --profile explore --example detail_sweep -- [DIR] [SIZE] [SEEDS]`
 //! (defaults `www/samples 256 1,2,3`). Options come from the environment, by their JS names
-//! (`MU=10 COMPLETENESS=0 R=2 ...`). Prints one line per exemplar (mean over seeds) and the worst
-//! cases; `SHEET=file.png` writes every first-seed output side by side (one row per exemplar
+//! (`MU=10 COMPLETENESS=0 R=2 HISTOGRAM_MATCHING=0 ITERATIONS=3`). Prints one line per exemplar
+//! (mean over seeds) and the worst cases; `ONLY=paving,stone_64` picks exemplars by prefix;
+//! `TRACE=1` prints every step of the first seed with the flat fraction at the end of each
+//! level; `SHEET=file.png` writes every first-seed output side by side (one row per exemplar
 //! size), so the figures can be checked against the pictures.
 
 use std::time::Instant;
@@ -32,6 +34,9 @@ fn options(size: usize, seed: u64) -> Options {
     }
     if let Some(v) = env_f32("R") {
         o.r = v;
+    }
+    if let Some(v) = env_f32("HISTOGRAM_MATCHING") {
+        o.histogram_matching = v;
     }
     if let Some(v) = env_f32("ITERATIONS") {
         o.iterations = v as usize;
@@ -69,18 +74,17 @@ fn main() {
     for name in &names {
         let exemplar = decode(&std::fs::read(format!("{dir}/{name}.png")).unwrap()).unwrap();
         let (mut f, mut co, mut cp, mut hi, mut ms) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        let mut worst_seed = 0.0f64;
         for &seed in &seeds {
             let start = Instant::now();
             let mut session = Session::new(&exemplar, options(size, seed)).unwrap();
             let trace = std::env::var("TRACE").is_ok() && seed == seeds[0];
             loop {
                 let event = session.step().unwrap();
-                let end_of_level = session.current_level() as *const _ as usize != 0
-                    && (event.kind == EventKind::Done
-                        || session.history().last().map(|p| p.level) != Some(event.level)
-                        || session.is_done()
-                        || event.changed == 0
-                        || event.iteration == session.options().iterations);
+                // A level ends when no match changed or its iteration cap is reached.
+                let end_of_level = event.kind == EventKind::Done
+                    || event.changed == 0
+                    || event.iteration == session.options().iterations;
                 if trace {
                     let flat = if end_of_level {
                         let out = session.output_full_size().unwrap();
@@ -108,6 +112,7 @@ fn main() {
             let out = session.output_full_size().unwrap();
             let q = quality(&exemplar, &out).unwrap();
             f += q.flat;
+            worst_seed = worst_seed.max(q.flat);
             co += q.coherence;
             cp += q.completeness;
             hi += q.histogram;
@@ -117,7 +122,7 @@ fn main() {
         }
         let n = seeds.len() as f64;
         println!(
-            "{name:<14} {:>7.3} {:>10.5} {:>12.5} {:>9.5} {:>8.0}",
+            "{name:<14} {:>7.3} {worst_seed:>9.3} {:>10.5} {:>12.5} {:>9.5} {:>8.0}",
             f / n,
             co / n,
             cp / n,

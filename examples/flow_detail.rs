@@ -37,7 +37,7 @@ fn main() {
         if matches!(event.kind, FlowEventKind::Frame | FlowEventKind::Done) {
             let frame = session.frame_image().expect("frame");
             let index = session.frame();
-            if index <= 6 || index >= 30 || index % 10 == 0 {
+            if index <= 6 || index >= 30 || index.is_multiple_of(10) {
                 let q = quality(&exemplar, &frame).expect("quality");
                 rows.push((index, q.flat, q.coherence, event.flow_energy));
                 let naive =
@@ -47,12 +47,10 @@ fn main() {
                     q.flat, q.coherence, event.flow_energy, naive.flat, naive.coherence
                 );
             }
-            if let Ok(dir) = std::env::var("WRITE") {
-                if index == 1 || index == frames {
-                    let png = encode_png(&frame).expect("png");
-                    std::fs::write(format!("{dir}/{name}-{size}-frame{index}.png"), png)
-                        .expect("write");
-                }
+            if let (Ok(dir), true) = (std::env::var("WRITE"), index == 1 || index == frames) {
+                let png = encode_png(&frame).expect("png");
+                std::fs::write(format!("{dir}/{name}-{size}-frame{index}.png"), png)
+                    .expect("write");
             }
         }
         if event.kind == FlowEventKind::Done {
