@@ -1,7 +1,9 @@
 //! Do flow frames keep their detail? `cargo run --profile explore --example flow_detail --
 //! [SAMPLE] [SIZE] [FRAMES]` (defaults: the page's `tiles_128 256 60`, a vortex of strength 2).
 //! Prints frame 1's flat fraction, coherence and flow energy, the means over frames 30-60 and
-//! their ratios to frame 1; `WRITE=dir` writes frames 1 and the last as PNGs.
+//! their ratios to frame 1, beside the naive warp's; `WRITE=dir` writes frames 1 and the last as
+//! PNGs. Options from the environment: `HIST` (histogramMatching, 1), `LAMBDA` (0.2),
+//! `FRAME_ITERATIONS` (3), `FRAME_SIZES` (16,8).
 
 use texsynth::core::{decode, encode_png};
 use texsynth::methods::flow::{
@@ -25,6 +27,9 @@ fn main() {
         frames,
         histogram_matching: std::env::var("HIST").map_or(1.0, |v| v.parse().expect("number")),
         lambda: std::env::var("LAMBDA").map_or(0.2, |v| v.parse().expect("number")),
+        frame_sizes: std::env::var("FRAME_SIZES").map_or(vec![16, 8], |v| {
+            v.split(',').map(|s| s.parse().expect("size")).collect()
+        }),
         frame_iterations: std::env::var("FRAME_ITERATIONS")
             .map_or(3, |v| v.parse().expect("number")),
         ..FlowOptions::default()
