@@ -8,7 +8,6 @@ use super::options::{FlowOptions, FlowSource};
 use super::warp::warp;
 use crate::core::{Edge, Error, Image, Result, Rng};
 use crate::methods::optimization::constraints::Constraint;
-use crate::methods::optimization::histogram::SortedChannels;
 use crate::methods::optimization::level::{LevelSetup, LevelSolver};
 use crate::methods::optimization::{self, EventKind};
 
@@ -85,9 +84,6 @@ pub struct FlowSession {
     history: Vec<FrameEnergy>,
     total_iterations: usize,
     last: Option<FlowEvent>,
-    /// The exemplar's sorted values for histogram matching, and its scratch space.
-    histogram: SortedChannels,
-    order: Vec<u32>,
 }
 
 impl FlowSession {
@@ -130,13 +126,13 @@ impl FlowSession {
                     wrap: options.tileable,
                     passes: FRAME_PATCHMATCH_PASSES,
                     completeness: 0.0,
+                    histogram_matching: options.histogram_matching,
+                    match_constrained: true,
                 };
                 LevelSolver::new(exemplar, setup, &mut rng)
             })
             .collect();
         Ok(FlowSession {
-            histogram: SortedChannels::new(exemplar),
-            order: Vec::new(),
             exemplar: exemplar.clone(),
             first: Some(first),
             solvers,
@@ -335,14 +331,6 @@ impl FlowSession {
             self.fresh = false;
         }
         solver.e_step(&self.exemplar, output, constraint);
-        if self.options.histogram_matching > 0.0 {
-            self.histogram.match_histogram(
-                output,
-                self.options.histogram_matching,
-                None,
-                &mut self.order,
-            );
-        }
         let changed = solver.m_step(output, constraint, &mut self.rng);
         self.iteration += 1;
         let texture_energy = solver.energy();

@@ -6,6 +6,7 @@
 use super::constraints::Constraint;
 use super::e_step::{Matches, e_step, robust_weight};
 use super::features::{feature_map, gather};
+use super::histogram::SortedChannels;
 use super::m_step::Matcher;
 use super::occurrence::{Occurrence, strength};
 use super::schedule::{grid_axis, nearest_corner};
@@ -36,6 +37,13 @@ pub struct LevelSetup {
     pub passes: usize,
     /// Weight alpha of the occurrence penalty (see [`super::occurrence`]); 0 is off.
     pub completeness: f32,
+    /// Strength of the histogram matching after each E-step (see [`super::histogram`]); 0 is
+    /// off.
+    pub histogram_matching: f32,
+    /// Whether histogram matching also moves constrained pixels: yes for flow frames, whose
+    /// constraint is the texture itself carried along the flow; no for a user's paint, whose
+    /// colours need not be the exemplar's.
+    pub match_constrained: bool,
 }
 
 /// A grid and its matches, where carried matches come from.
@@ -66,6 +74,9 @@ pub struct LevelSolver {
     constrained_weights: Vec<f32>,
     /// The exemplar coverage the last occurrence penalty used (empty before).
     coverage: Vec<f64>,
+    /// This level's exemplar values sorted, for histogram matching, and its scratch space.
+    histogram: SortedChannels,
+    order: Vec<u32>,
 }
 
 impl LevelSolver {
@@ -94,6 +105,8 @@ impl LevelSolver {
             constrained: Vec::new(),
             constrained_weights: Vec::new(),
             coverage: Vec::new(),
+            histogram: SortedChannels::new(exemplar),
+            order: Vec::new(),
             setup,
             matcher,
             cols,
@@ -304,10 +317,11 @@ impl LevelSolver {
     }
 
     /// The E-step: replaces `output` (this level's size) by the minimiser of the IRLS-weighted
-    /// texture energy for the current matches, plus the constraint's term when given. Returns
-    /// the conjugate-gradient iterations of the gradient solve (0 without the gradient energy).
+    /// texture energy for the current matches, plus the constraint's term when given, then
+    /// matches its histogram to the exemplar's when the setup asks for it. Returns the
+    /// conjugate-gradient iterations of the gradient solve (0 without the gradient energy).
     pub fn e_step(
-        &self,
+        &mut self,
         exemplar: &Image,
         output: &mut Image,
         constraint: Option<&Constraint>,
@@ -336,7 +350,16 @@ impl LevelSolver {
             wrap: self.setup.wrap,
             mu: self.setup.mu,
         };
-        e_step(&m, output, constraint)
+        let iterations = e_step(&m, output, constraint);
+        let strength = self.setup.histogram_matching;
+        if strength > 0.0 {
+            let fixed = constraint
+                .filter(|_| !self.setup.match_constrained)
+                .map(|c| c.mask.as_slice());
+            self.histogram
+                .match_histogram(output, strength, fixed, &mut self.order);
+        }
+        iterations
     }
 
     /// The texture energy sum_p d_p^(r/2), normalised by the number of neighbourhoods and the

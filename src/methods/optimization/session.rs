@@ -3,7 +3,6 @@
 
 use super::constraints::{Constraint, SoftConstraints};
 use super::e_step::edge;
-use super::histogram::SortedChannels;
 use super::initial::random_patches;
 use super::level::{LevelSetup, LevelSolver, fit_output};
 use super::m_step::PATCHMATCH_PASSES;
@@ -77,9 +76,6 @@ pub struct Session {
     constraint: Option<Constraint>,
     history: Vec<EnergyPoint>,
     last: Option<Event>,
-    /// The sorted exemplar values per octave, for histogram matching, and its scratch space.
-    histograms: Vec<SortedChannels>,
-    order: Vec<u32>,
     /// CG iterations of the last E-step.
     solver_iterations: usize,
 }
@@ -91,10 +87,7 @@ impl Session {
         let levels = plan(exemplar.width(), exemplar.height(), &options)?;
         let octaves = levels.iter().map(|l| l.octave).max().unwrap_or(0) + 1;
         let exemplars = gaussian_pyramid(exemplar, octaves, Edge::Clamp)?;
-        let histograms = exemplars.iter().map(SortedChannels::new).collect();
         Ok(Session {
-            histograms,
-            order: Vec::new(),
             solver_iterations: 0,
             rng: Rng::new(options.seed),
             options,
@@ -281,6 +274,8 @@ impl Session {
             wrap: self.options.tileable,
             passes: PATCHMATCH_PASSES,
             completeness: self.options.completeness,
+            histogram_matching: self.options.histogram_matching,
+            match_constrained: false,
         };
         let mut solver = LevelSolver::new(&self.exemplars[lv.octave], setup, &mut self.rng);
         let previous = self.level.checked_sub(1).map(|i| self.levels[i]);
@@ -329,16 +324,6 @@ impl Session {
         }
         let output = self.output.as_mut().expect("made above");
         self.solver_iterations = solver.e_step(exemplar, output, constraint);
-        if self.options.histogram_matching > 0.0 {
-            let histogram = &self.histograms[lv.octave];
-            let fixed = constraint.map(|c| c.mask.as_slice());
-            histogram.match_histogram(
-                output,
-                self.options.histogram_matching,
-                fixed,
-                &mut self.order,
-            );
-        }
         Ok(solver.m_step(output, constraint, &mut self.rng))
     }
 
