@@ -177,4 +177,16 @@ mod tests {
         // the used one holds 160, 15 over.
         assert!((occ.penalty(Pos::new(0, 0)) - 2.0 * 15.0).abs() < 1e-4);
     }
+
+    #[test]
+    fn remembered_coverage_is_the_mean_of_now_and_before() {
+        let before = Occurrence::new(&[Pos::new(0, 0)], 2, 6, 6, 1.0);
+        let now = Occurrence::remembering(&[Pos::new(4, 4)], 2, 6, 6, 1.0, Some(before.coverage()));
+        assert_eq!(now.coverage()[0], 0.5);
+        assert_eq!(now.coverage()[4 * 6 + 4], 0.5);
+        assert_eq!(now.coverage()[2 * 6 + 2], 0.0);
+        // A half-used window (sum 2) is still over an even share (1 * 4 / 36 * 4 = 0.44); a
+        // window that neither coverage touches costs nothing.
+        assert!(now.penalty(Pos::new(0, 0)) > 0.0 && now.penalty(Pos::new(2, 2)) == 0.0);
+    }
 }
