@@ -1,5 +1,6 @@
 //! Layer 3: one module per paper's feature set, each a progressive session built on the solvers.
 
+pub mod design;
 pub mod flow;
 pub mod graphcut;
 pub mod optimization;
