@@ -239,6 +239,12 @@ fn shift(image: &Image, dx: isize, dy: isize) -> Image {
     })
 }
 
+/// The transpose: pixel (x, y) moves to (y, x).
+#[must_use]
+pub fn transpose(image: &Image) -> Image {
+    remap(image, image.height(), image.width(), |x, y, _, _| (y, x))
+}
+
 /// Exact quarter turns: 1 = 90 degrees counter-clockwise (a transpose, then a flip).
 fn quarter_turns(image: &Image, turns: usize) -> Image {
     let (w, h) = (image.width(), image.height());
@@ -384,10 +390,6 @@ fn shrink(image: &Image, factor: f64) -> Result<Image> {
 mod tests {
     use super::*;
     use crate::core::testing::noise;
-
-    fn transpose(image: &Image) -> Image {
-        remap(image, image.height(), image.width(), |x, y, _, _| (y, x))
-    }
 
     #[test]
     fn mirror_and_flip_twice_are_the_identity() {

@@ -13,3 +13,5 @@ pub mod poisson_paste;
 pub use deform::{Deformation, DeformationRanges, Steps, deform};
 pub use labelling::LabellingWeights;
 pub use local::{BrushOptions, LocalDeformation, Stroke, StrokeResult};
+pub mod tileable;
+pub use tileable::{Tileable, TileableOptions, make_tileable};
