@@ -7,6 +7,7 @@
 
 pub mod deform;
 pub mod labelling;
+pub mod layers;
 pub mod local;
 pub mod poisson_paste;
 
