@@ -15,3 +15,6 @@ mod graphcut_cases;
 
 #[path = "common/flow_cases.rs"]
 mod flow_cases;
+
+#[path = "common/design_cases.rs"]
+mod design_cases;

@@ -76,6 +76,12 @@ impl Exemplar {
 }
 
 impl Exemplar {
+    /// Wraps an image a method made (a deformed or tileable texture, a design's output).
+    #[must_use]
+    pub fn from_image(image: Image) -> Exemplar {
+        Exemplar { image }
+    }
+
     /// The decoded image, for the other session types.
     #[must_use]
     pub fn image(&self) -> &Image {

@@ -1,6 +1,7 @@
 //! Layer 4: the only code that knows about JavaScript. Each file wraps one JS-visible type; inputs
 //! are validated here and every failure becomes a JS `Error` whose message names the problem.
 
+mod design;
 mod error;
 mod exemplar;
 mod flow;
@@ -11,6 +12,7 @@ mod options;
 mod pixels;
 mod quality;
 
+pub use design::{LayerDesign, TextureBrush, deform_texture, deformation_set, make_tileable};
 pub use exemplar::Exemplar;
 pub use flow::{FlowAnimation, flow_field};
 pub use graphcut::GraphcutTextures;

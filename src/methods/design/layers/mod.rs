@@ -21,4 +21,6 @@ pub mod logistic;
 pub mod qtp;
 mod session;
 
-pub use session::{Layer, LayerDesign, LayerEvent, LayerOptions, LayerPlacement, LayerSearch};
+pub use session::{
+    Layer, LayerDesign, LayerEvent, LayerOptions, LayerPlacement, LayerSearch, MAX_LAYERS,
+};

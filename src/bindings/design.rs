@@ -1,0 +1,501 @@
+//! Texture design (Shen et al. 2009) for JS: `deformTexture` and `deformationSet` (stage 1),
+//! `TextureBrush` (stage 2, local deformation with undo), `LayerDesign` (stage 4, a session that
+//! steps one row of patches at a time) and `makeTileable` (section 4). Stage 3, the wavelet
+//! energy, is the `energy` option of `TextureOptimization`.
+
+use js_sys::{Array, Uint8ClampedArray};
+use wasm_bindgen::prelude::*;
+
+use super::error::JsResult;
+use super::exemplar::Exemplar;
+use super::options::{OptionsReader, object};
+use super::pixels::{render_into, write_rgba};
+use crate::core::{Error, Image};
+use crate::methods::design::layers::{
+    Layer, LayerDesign as Design, LayerOptions, LayerPlacement, LayerSearch,
+};
+use crate::methods::design::{
+    BrushOptions, Deformation, DeformationRanges, LabellingWeights, LocalDeformation, Steps,
+    Stroke, StrokeResult, TileableOptions, deform,
+};
+
+fn invalid(name: &'static str, reason: impl Into<String>) -> JsError {
+    Error::InvalidParameter {
+        name,
+        reason: reason.into(),
+    }
+    .into()
+}
+
+/// One deformation from `{ rotate: 30 }`, `{ shift: [dx, dy] }`, `{ mirror: true }`,
+/// `{ flip: true }` or `{ scale: 1.5 }`.
+fn read_deformation(value: &JsValue) -> JsResult<Option<Deformation>> {
+    let js = OptionsReader::new(value, &["rotate", "shift", "mirror", "flip", "scale"])?;
+    let mut found = Vec::new();
+    if let Some(degrees) = js.number("rotate")? {
+        found.push(Deformation::Rotate { degrees });
+    }
+    if let Some(shift) = js.numbers("shift")? {
+        if shift.len() != 2 || shift.iter().any(|v| v.fract() != 0.0 || v.abs() > 1e6) {
+            return Err(invalid(
+                "shift",
+                "must be [dx, dy], two whole numbers of pixels",
+            ));
+        }
+        found.push(Deformation::Shift {
+            dx: shift[0] as isize,
+            dy: shift[1] as isize,
+        });
+    }
+    if js.boolean("mirror")? == Some(true) {
+        found.push(Deformation::Mirror);
+    }
+    if js.boolean("flip")? == Some(true) {
+        found.push(Deformation::Flip);
+    }
+    if let Some(factor) = js.number("scale")? {
+        found.push(Deformation::Scale { factor });
+    }
+    if found.len() > 1 {
+        return Err(invalid(
+            "deformation",
+            "each object names one deformation; give an array for several, in order",
+        ));
+    }
+    if let Some(d) = found.first() {
+        d.validate()?;
+    }
+    Ok(found.first().copied())
+}
+
+/// A deformation object or an array of them.
+fn read_deformations(value: &JsValue) -> JsResult<Vec<Deformation>> {
+    if value.is_undefined() || value.is_null() {
+        return Ok(Vec::new());
+    }
+    let items: Vec<JsValue> = if Array::is_array(value) {
+        Array::from(value).iter().collect()
+    } else {
+        vec![value.clone()]
+    };
+    if items.len() > 16 {
+        return Err(invalid(
+            "deformations",
+            format!("at most 16 in a row, got {}", items.len()),
+        ));
+    }
+    let mut out = Vec::new();
+    for item in &items {
+        if let Some(d) = read_deformation(item)? {
+            out.push(d);
+        }
+    }
+    Ok(out)
+}
+
+/// Applies global deformations (stage 1) in order: `deformTexture(exemplar, [{ rotate: 30 },
+/// { scale: 0.75 }])`. Rotation by a multiple of 90 degrees, mirror, flip and shift are exact;
+/// other angles and scales resample and keep only pixels from inside the texture.
+#[wasm_bindgen(js_name = deformTexture)]
+pub fn deform_texture(exemplar: &Exemplar, deformations: JsValue) -> JsResult<Exemplar> {
+    let list = read_deformations(&deformations)?;
+    Ok(Exemplar::from_image(deform(exemplar.image(), &list)?))
+}
+
+fn read_steps(js: &OptionsReader, name: &'static str) -> JsResult<Option<Steps>> {
+    let Some(value) = js.value(name) else {
+        return Ok(None);
+    };
+    let r = OptionsReader::new(&value, &["from", "to", "step"])?;
+    let need = |v: Option<f64>, key: &str| {
+        v.ok_or_else(|| {
+            invalid(
+                name,
+                format!("needs '{key}' (a range is {{ from, to, step }})"),
+            )
+        })
+    };
+    Ok(Some(Steps {
+        from: need(r.number("from")?, "from")?,
+        to: need(r.number("to")?, "to")?,
+        step: need(r.number("step")?, "step")?,
+    }))
+}
+
+/// The set of deformed textures I_g1..I_gk (stage 1): one per value of each range,
+/// `deformationSet(exemplar, { rotation: { from: 0, to: 90, step: 30 }, scale: { from: 0.5,
+/// to: 1.5, step: 0.5 }, shift: { from: 0.25, to: 0.5, step: 0.25 }, mirror: true, flip: true
+/// })` (shift as a fraction of the size). Returns `[{ label, exemplar }]`, at most 64.
+#[wasm_bindgen(js_name = deformationSet)]
+pub fn deformation_set(exemplar: &Exemplar, ranges: JsValue) -> JsResult<Array> {
+    let js = OptionsReader::new(&ranges, &["rotation", "scale", "shift", "mirror", "flip"])?;
+    let ranges = DeformationRanges {
+        rotation: read_steps(&js, "rotation")?,
+        scale: read_steps(&js, "scale")?,
+        shift: read_steps(&js, "shift")?,
+        mirror: js.boolean("mirror")?.unwrap_or(false),
+        flip: js.boolean("flip")?.unwrap_or(false),
+    };
+    let image = exemplar.image();
+    let out = Array::new();
+    for d in ranges.expand(image.width(), image.height())? {
+        out.push(&object(&[
+            ("label", d.label().into()),
+            ("exemplar", Exemplar::from_image(d.apply(image)?).into()),
+        ]));
+    }
+    Ok(out)
+}
+
+/// Makes an image cyclic (section 4): `makeTileable(exemplar, { overlapX, overlapY })` (defaults:
+/// a sixth of each side). Returns `{ exemplar, cutX, cutY, seamCostX, seamCostY }`; the image is
+/// smaller than the input by the overlaps.
+#[wasm_bindgen(js_name = makeTileable)]
+pub fn make_tileable(exemplar: &Exemplar, options: JsValue) -> JsResult<JsValue> {
+    let js = OptionsReader::new(&options, &["overlapX", "overlapY"])?;
+    let options = TileableOptions {
+        overlap_x: js.integer("overlapX", 0, 4096)?.map(|v| v as usize),
+        overlap_y: js.integer("overlapY", 0, 4096)?.map(|v| v as usize),
+    };
+    let t = crate::methods::design::make_tileable(exemplar.image(), options)?;
+    let seam: Vec<u8> = t
+        .seam
+        .iter()
+        .flat_map(|&s| if s { [255, 40, 40, 255] } else { [0, 0, 0, 0] })
+        .collect();
+    Ok(object(&[
+        ("exemplar", Exemplar::from_image(t.image).into()),
+        ("cutX", (t.cut_x as u32).into()),
+        ("cutY", (t.cut_y as u32).into()),
+        ("seamCostX", t.seam_cost_x.into()),
+        ("seamCostY", t.seam_cost_y.into()),
+        ("seam", Uint8ClampedArray::from(seam.as_slice()).into()),
+    ]))
+}
+
+/// Local deformation with a brush (stage 2): paint over texture elements of a reference, drag
+/// them onto the base, and the graph cut (eqs. 1-3) and Poisson paste put them in. Undoable.
+#[wasm_bindgen]
+pub struct TextureBrush {
+    design: LocalDeformation,
+    last: Option<StrokeResult>,
+}
+
+#[wasm_bindgen]
+impl TextureBrush {
+    /// `new TextureBrush(base, { nu: 1000, k1: 0.5, k2: 0.5, margin: 12, poisson: true })`.
+    #[wasm_bindgen(constructor)]
+    pub fn new(base: &Exemplar, options: JsValue) -> JsResult<TextureBrush> {
+        let js = OptionsReader::new(&options, &["nu", "k1", "k2", "margin", "poisson"])?;
+        let d = BrushOptions::default();
+        let options = BrushOptions {
+            weights: LabellingWeights {
+                nu: js.number("nu")?.map_or(d.weights.nu, |v| v as f32),
+                k1: js.number("k1")?.map_or(d.weights.k1, |v| v as f32),
+                k2: js.number("k2")?.map_or(d.weights.k2, |v| v as f32),
+            },
+            margin: js
+                .integer("margin", 0, 256)?
+                .map_or(d.margin, |v| v as usize),
+            poisson: js.boolean("poisson")?.unwrap_or(d.poisson),
+        };
+        Ok(TextureBrush {
+            design: LocalDeformation::new(base.image(), options)?,
+            last: None,
+        })
+    }
+
+    /// One stroke: `mask` has one byte per reference pixel (non-zero where painted); the painted
+    /// elements move by (dx, dy) onto the base. Returns `{ x, y, width, height, taken, energy,
+    /// poissonIterations }` (the window on the base, the pixels that took the reference, E(L)).
+    pub fn stroke(
+        &mut self,
+        reference: &Exemplar,
+        mask: &[u8],
+        dx: i32,
+        dy: i32,
+    ) -> JsResult<JsValue> {
+        let mask: Vec<bool> = mask.iter().map(|&m| m != 0).collect();
+        let r = self.design.stroke(&Stroke {
+            reference: reference.image(),
+            mask: &mask,
+            dx: dx as isize,
+            dy: dy as isize,
+        })?;
+        let event = object(&[
+            ("x", (r.x as u32).into()),
+            ("y", (r.y as u32).into()),
+            ("width", (r.width as u32).into()),
+            ("height", (r.height as u32).into()),
+            ("taken", (r.taken as u32).into()),
+            ("energy", r.energy.into()),
+            ("poissonIterations", (r.poisson_iterations as u32).into()),
+        ]);
+        self.last = Some(r);
+        Ok(event)
+    }
+
+    /// Goes back one stroke; false when there is none.
+    pub fn undo(&mut self) -> bool {
+        self.last = None;
+        self.design.undo()
+    }
+
+    #[wasm_bindgen(getter, js_name = undoDepth)]
+    pub fn undo_depth(&self) -> u32 {
+        self.design.undo_depth() as u32
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn width(&self) -> u32 {
+        self.design.image().width() as u32
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn height(&self) -> u32 {
+        self.design.image().height() as u32
+    }
+
+    /// The base as it is now.
+    #[wasm_bindgen(js_name = renderInto)]
+    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        render_into(self.design.image(), target)
+    }
+
+    /// The last stroke's labelling over the base (Fig. 3e): blue where the pixels took the
+    /// reference, brighter where brushed, red along the seam, transparent elsewhere.
+    #[wasm_bindgen(js_name = renderLabels)]
+    pub fn render_labels(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        let (w, h) = (self.width() as usize, self.height() as usize);
+        let mut rgba = vec![0u8; w * h * 4];
+        if let Some(r) = &self.last {
+            let label = |x: usize, y: usize| r.labels[y * r.width + x];
+            for y in 0..r.height {
+                for x in 0..r.width {
+                    let l = label(x, y);
+                    let taken = l > 0;
+                    let seam = [(x + 1 < r.width, x + 1, y), (y + 1 < r.height, x, y + 1)]
+                        .iter()
+                        .any(|&(ok, xx, yy)| ok && (label(xx, yy) > 0) != taken)
+                        || (x > 0 && (label(x - 1, y) > 0) != taken)
+                        || (y > 0 && (label(x, y - 1) > 0) != taken);
+                    let px = match (seam, l) {
+                        (true, _) => [255, 40, 40, 255],
+                        (false, 2) => [80, 170, 255, 150],
+                        (false, 1) => [80, 120, 255, 90],
+                        _ => [0, 0, 0, 0],
+                    };
+                    let i = ((r.y + y) * w + r.x + x) * 4;
+                    rgba[i..i + 4].copy_from_slice(&px);
+                }
+            }
+        }
+        write_rgba(&rgba, target)
+    }
+
+    /// The base as an `Exemplar`, to synthesise from or to use as another stroke's reference.
+    #[wasm_bindgen(js_name = toExemplar)]
+    pub fn to_exemplar(&self) -> Exemplar {
+        Exemplar::from_image(self.design.image().clone())
+    }
+}
+
+const LAYER_KNOWN: &[&str] = &[
+    "outputWidth",
+    "outputHeight",
+    "patchSize",
+    "overlap",
+    "search",
+    "keep",
+    "placement",
+    "tolerance",
+    "seed",
+];
+
+fn read_layer_options(value: &JsValue) -> JsResult<LayerOptions> {
+    let js = OptionsReader::new(value, LAYER_KNOWN)?;
+    let d = LayerOptions::default();
+    let size = |name| js.integer(name, 1, 8192).map(|v| v.map(|v| v as usize));
+    Ok(LayerOptions {
+        output_width: size("outputWidth")?.unwrap_or(d.output_width),
+        output_height: size("outputHeight")?.unwrap_or(d.output_height),
+        patch_size: js
+            .integer("patchSize", 8, 256)?
+            .map_or(d.patch_size, |v| v as usize),
+        overlap: js.integer("overlap", 1, 127)?.map(|v| v as usize),
+        search: match js.string("search")?.as_deref() {
+            None | Some("qtp") => LayerSearch::Qtp,
+            Some("exhaustive") => LayerSearch::Exhaustive,
+            Some(other) => {
+                return Err(invalid(
+                    "search",
+                    format!("must be 'qtp' or 'exhaustive', got '{other}'"),
+                ));
+            }
+        },
+        keep: js.integer("keep", 1, 256)?.map_or(d.keep, |v| v as usize),
+        placement: match js.string("placement")?.as_deref() {
+            None | Some("logistic") => LayerPlacement::Logistic,
+            Some("random") => LayerPlacement::Random,
+            Some("best") => LayerPlacement::Best,
+            Some(other) => {
+                return Err(invalid(
+                    "placement",
+                    format!("must be 'logistic', 'random' or 'best', got '{other}'"),
+                ));
+            }
+        },
+        tolerance: js.number("tolerance")?.map_or(d.tolerance, |v| v as f32),
+        seed: js
+            .integer("seed", 0, u64::from(u32::MAX))?
+            .unwrap_or(d.seed),
+    })
+}
+
+/// Fast layer-based design (stage 4): add layers (designed textures, each with its own global
+/// deformations), optionally a layout saying which layer each output pixel takes, then `step()`
+/// fills the output one row of patches at a time.
+#[wasm_bindgen]
+pub struct LayerDesign {
+    options: LayerOptions,
+    layers: Vec<Layer>,
+    layout: Option<Vec<u8>>,
+    design: Option<Design>,
+}
+
+#[wasm_bindgen]
+impl LayerDesign {
+    /// `new LayerDesign({ outputWidth: 360, outputHeight: 360, patchSize: 32, overlap,
+    /// search: 'qtp' | 'exhaustive', keep: 32, placement: 'logistic' | 'random' | 'best',
+    /// tolerance: 0.3, seed: 1 })`.
+    #[wasm_bindgen(constructor)]
+    pub fn new(options: JsValue) -> JsResult<LayerDesign> {
+        let options = read_layer_options(&options)?;
+        // Validate now, with a stand-in layer, so that bad options fail here.
+        let probe = Image::new(options.patch_size, options.patch_size, 3)?;
+        let layout = vec![0u8; options.output_width * options.output_height];
+        Design::new(
+            &[Layer {
+                texture: probe,
+                deformations: vec![],
+            }],
+            &layout,
+            options.clone(),
+        )?;
+        Ok(LayerDesign {
+            options,
+            layers: Vec::new(),
+            layout: None,
+            design: None,
+        })
+    }
+
+    /// Adds a layer; returns its index. `deformations` as in `deformTexture`. Starts over.
+    #[wasm_bindgen(js_name = addLayer)]
+    pub fn add_layer(&mut self, exemplar: &Exemplar, deformations: JsValue) -> JsResult<u32> {
+        if self.layers.len() == crate::methods::design::layers::MAX_LAYERS {
+            return Err(invalid("layers", "at most 16 layers"));
+        }
+        let deformations = read_deformations(&deformations)?;
+        // Fail here, not at the first step, if the deformed layer is too small.
+        let t = deform(exemplar.image(), &deformations)?;
+        if t.width() < self.options.patch_size || t.height() < self.options.patch_size {
+            return Err(Error::InvalidSize {
+                what: "layer texture",
+                width: t.width(),
+                height: t.height(),
+                reason: format!("is smaller than the patch size {}", self.options.patch_size),
+            }
+            .into());
+        }
+        self.layers.push(Layer {
+            texture: exemplar.image().clone(),
+            deformations,
+        });
+        self.design = None;
+        Ok(self.layers.len() as u32 - 1)
+    }
+
+    /// Which layer each output pixel takes: one byte per pixel. Without it every pixel takes
+    /// layer 0. Starts over.
+    #[wasm_bindgen(js_name = setLayout)]
+    pub fn set_layout(&mut self, layout: &[u8]) -> JsResult<()> {
+        let n = self.options.output_width * self.options.output_height;
+        if layout.len() != n {
+            return Err(Error::LengthMismatch {
+                what: "layout",
+                expected: n,
+                actual: layout.len(),
+            }
+            .into());
+        }
+        self.layout = Some(layout.to_vec());
+        self.design = None;
+        Ok(())
+    }
+
+    /// Makes the next row of patches. Returns `{ kind: 'row' | 'done', done, row, rows, patches,
+    /// totalPatches, ssd, totalSsd, positionsSearched, pixelsCompared }`.
+    pub fn step(&mut self) -> JsResult<JsValue> {
+        if self.design.is_none() {
+            if self.layers.is_empty() {
+                return Err(invalid(
+                    "layers",
+                    "add at least one layer with addLayer() first",
+                ));
+            }
+            let n = self.options.output_width * self.options.output_height;
+            let layout = self.layout.clone().unwrap_or_else(|| vec![0; n]);
+            self.design = Some(Design::new(&self.layers, &layout, self.options.clone())?);
+        }
+        let e = self.design.as_mut().expect("built above").step()?;
+        Ok(object(&[
+            ("kind", if e.done { "done" } else { "row" }.into()),
+            ("done", e.done.into()),
+            ("row", (e.row as u32).into()),
+            ("rows", (e.rows as u32).into()),
+            ("patches", (e.patches as u32).into()),
+            ("totalPatches", (e.total_patches as u32).into()),
+            ("ssd", e.ssd.into()),
+            ("totalSsd", e.total_ssd.into()),
+            ("positionsSearched", (e.positions_searched as f64).into()),
+            ("pixelsCompared", (e.pixels_compared as f64).into()),
+        ]))
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn done(&self) -> bool {
+        self.design.as_ref().is_some_and(Design::is_done)
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn width(&self) -> u32 {
+        self.options.output_width as u32
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn height(&self) -> u32 {
+        self.options.output_height as u32
+    }
+
+    /// The output so far (black where no patch is yet).
+    #[wasm_bindgen(js_name = renderInto)]
+    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        match &self.design {
+            Some(d) => render_into(d.image(), target),
+            None => write_rgba(
+                &vec![0; self.options.output_width * self.options.output_height * 4],
+                target,
+            ),
+        }
+    }
+
+    /// The output as an `Exemplar` (for the gallery, `makeTileable` or a PNG).
+    #[wasm_bindgen(js_name = toExemplar)]
+    pub fn to_exemplar(&self) -> JsResult<Exemplar> {
+        match &self.design {
+            Some(d) => Ok(Exemplar::from_image(d.image().clone())),
+            None => Err(invalid("design", "has not stepped yet")),
+        }
+    }
+}
