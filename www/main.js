@@ -5,12 +5,13 @@ import init, { version } from './pkg/texsynth.js';
 import { drawInto } from './lib/canvas.js';
 import { setupInput } from './lib/input.js';
 import { Runner } from './lib/runner.js';
+import * as design from './panels/design.js';
 import * as flow from './panels/flow.js';
 import * as graphcut from './panels/graphcut.js';
 import * as merge from './panels/merge.js';
 import * as optimization from './panels/optimization.js';
 
-const PANELS = [optimization, graphcut, merge, flow];
+const PANELS = [optimization, graphcut, merge, flow, design];
 const $ = (id) => document.getElementById(id);
 
 function showError(message) {
@@ -86,9 +87,11 @@ function selectPanel(module) {
 
 function setExemplar(exemplar, label) {
   clearError();
-  resetPanel();
+  state.runner?.pause();
   state.exemplar?.free();
   state.exemplar = exemplar;
+  // After the swap, so that a panel that keeps a copy of the exemplar sees the new one.
+  resetPanel();
   drawInto($('exemplar-canvas'), exemplar);
   const kind = { 1: 'grey', 2: 'grey + alpha', 3: 'RGB', 4: 'RGBA' }[exemplar.channels];
   $('exemplar-info').textContent = `${label}: ${exemplar.width}×${exemplar.height}, ${kind}`;

@@ -53,3 +53,45 @@ export function drawLinePlot(canvas, values, { markers = [], title = '', color =
 function format(v) {
   return Math.abs(v) >= 100 || v === 0 ? v.toFixed(0) : v.toPrecision(2);
 }
+
+/**
+ * Draws several series on one plot, each `{ values, color, label }`, on a shared scale (the
+ * energy of plain, Haar and Daubechies runs, as in Fig. 5 of Shen et al. 2009).
+ */
+export function drawLinePlots(canvas, series, { title = '' } = {}) {
+  const ctx = canvas.getContext('2d');
+  const { width, height } = canvas;
+  const pad = { left: 44, right: 8, top: 18, bottom: 18 };
+  ctx.clearRect(0, 0, width, height);
+  ctx.fillStyle = '#101217';
+  ctx.fillRect(0, 0, width, height);
+  ctx.font = '11px system-ui, sans-serif';
+  ctx.fillStyle = '#9aa1b2';
+  ctx.fillText(title, pad.left, 12);
+  const all = series.flatMap((s) => s.values);
+  if (all.length === 0) return;
+  const max = Math.max(...all);
+  const min = Math.min(0, ...all);
+  const span = max - min || 1;
+  const longest = Math.max(...series.map((s) => s.values.length));
+  const x = (i) => pad.left + (longest <= 1 ? 0 : (i / (longest - 1)) * (width - pad.left - pad.right));
+  const y = (v) => height - pad.bottom - ((v - min) / span) * (height - pad.top - pad.bottom);
+  ctx.strokeStyle = '#2e3340';
+  ctx.beginPath();
+  ctx.moveTo(pad.left, pad.top);
+  ctx.lineTo(pad.left, height - pad.bottom);
+  ctx.lineTo(width - pad.right, height - pad.bottom);
+  ctx.stroke();
+  ctx.fillText(format(max), 2, pad.top + 4);
+  ctx.fillText(format(min), 2, height - pad.bottom);
+  series.forEach(({ values, color, label }, k) => {
+    ctx.strokeStyle = color;
+    ctx.lineWidth = 1.5;
+    ctx.beginPath();
+    values.forEach((v, i) => (i === 0 ? ctx.moveTo(x(i), y(v)) : ctx.lineTo(x(i), y(v))));
+    ctx.stroke();
+    ctx.fillStyle = color;
+    ctx.fillText(label, width - pad.right - 90, pad.top + 12 * (k + 1));
+  });
+  ctx.lineWidth = 1;
+}

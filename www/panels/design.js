@@ -1,0 +1,73 @@
+// The "Texture design" panel (Shen et al. 2009): a designer makes a family of textures from one
+// sample, stage by stage. Each stage is a module in ./design/; they share a gallery of designed
+// textures (the set S of the paper), from which the base and the reference are picked.
+import { Gallery } from './design/gallery.js';
+import * as deformStage from './design/deform.js';
+import * as brushStage from './design/brush.js';
+import * as synthesisStage from './design/synthesis.js';
+import * as layersStage from './design/layers.js';
+import * as tileableStage from './design/tileable.js';
+
+export const id = 'design';
+export const title = 'Texture design';
+
+const STAGES = [deformStage, brushStage, synthesisStage, layersStage, tileableStage];
+
+export function createPanel(ui) {
+  let gallery = null;
+  let stage = null;
+  const context = { ui, get gallery() { return gallery; }, readout: (text) => { ui.$('ds-readout').textContent = text; } };
+
+  function selectStage(module) {
+    stage?.unmount?.();
+    stage = module.createStage(context);
+    ui.$('ds-stage-options').innerHTML = stage.optionsHtml;
+    ui.$('ds-stage-side').innerHTML = stage.sideHtml ?? '';
+    for (const button of ui.$('ds-stages').children) {
+      button.setAttribute('aria-selected', String(button.dataset.stage === module.id));
+    }
+    document.body.dataset.designStage = module.id;
+    context.readout(stage.hint);
+    stage.mount();
+  }
+
+  return {
+    id,
+    title,
+    optionsHtml: `<nav class="stages" id="ds-stages" role="tablist" aria-label="Design stage">
+        ${STAGES.map((s, i) => `<button type="button" role="tab" data-stage="${s.id}">${i + 1}. ${s.title}</button>`).join('')}
+      </nav>
+      <div class="method-options" id="ds-stage-options"></div>`,
+    sideHtml: `<div class="readout" id="ds-readout"></div>
+      <div id="ds-stage-side"></div>
+      <h3 class="side-title">Designed textures <small>(B: base, R: reference)</small></h3>
+      <div class="gallery" id="ds-gallery" role="list" aria-label="Designed textures"></div>`,
+    mount() {
+      gallery = new Gallery(ui.$('ds-gallery'), () => stage?.onSelection?.());
+      for (const button of ui.$('ds-stages').children) {
+        button.addEventListener('click', () => selectStage(STAGES.find((s) => s.id === button.dataset.stage)));
+      }
+      selectStage(STAGES[0]);
+    },
+    unmount() {
+      stage?.unmount?.();
+      gallery?.clear();
+    },
+    step() {
+      return stage?.step ? stage.step() : null;
+    },
+    onStep(event) {
+      stage?.onStep?.(event);
+    },
+    reset() {
+      // A new exemplar (or new output size / seed) starts the design over from the sample.
+      if (!gallery || !ui.exemplar()) return;
+      if (gallery.sampleOf !== ui.exemplar()) {
+        gallery.clear();
+        gallery.add('sample I', gallery.copy(ui.exemplar()));
+        gallery.sampleOf = ui.exemplar();
+      }
+      stage?.reset?.();
+    },
+  };
+}
