@@ -109,10 +109,22 @@ fn main() {
         );
     }
     println!();
-    for size in [256, 1024] {
+    for size in std::env::var("TILE_SIZES").map_or(vec![256, 1024], |v| {
+        v.split(',').map(|s| s.parse().expect("size")).collect()
+    }) {
         let image = resize_bilinear(&texture, size, size, Edge::Clamp).expect("resize");
         let start = Instant::now();
-        let t = make_tileable(&image, TileableOptions::default()).expect("tileable");
+        let overlap = std::env::var("OVERLAP")
+            .ok()
+            .map(|v| v.parse().expect("overlap"));
+        let t = make_tileable(
+            &image,
+            TileableOptions {
+                overlap_x: overlap,
+                overlap_y: overlap,
+            },
+        )
+        .expect("tileable");
         if let Ok(dir) = std::env::var("WRITE") {
             let (w, h, c) = (t.image.width(), t.image.height(), t.image.channels());
             let tiled = Image::from_fn(3 * w, 3 * h, c, |x, y, k| t.image.pixel(x % w, y % h)[k])

@@ -16,7 +16,7 @@ use crate::methods::design::layers::{
 };
 use crate::methods::design::{
     BrushOptions, Deformation, DeformationRanges, LabellingWeights, LocalDeformation, Steps,
-    Stroke, StrokeResult, TileableOptions, deform,
+    Stroke, StrokeResult, Tileable, TileableOptions, deform,
 };
 
 fn invalid(name: &'static str, reason: impl Into<String>) -> JsError {
@@ -147,30 +147,101 @@ pub fn deformation_set(exemplar: &Exemplar, ranges: JsValue) -> JsResult<Array> 
     Ok(out)
 }
 
-/// Makes an image cyclic (section 4): `makeTileable(exemplar, { overlapX, overlapY })` (defaults:
-/// a sixth of each side). Returns `{ exemplar, cutX, cutY, seamCostX, seamCostY }`; the image is
-/// smaller than the input by the overlaps.
-#[wasm_bindgen(js_name = makeTileable)]
-pub fn make_tileable(exemplar: &Exemplar, options: JsValue) -> JsResult<JsValue> {
-    let js = OptionsReader::new(&options, &["overlapX", "overlapY"])?;
-    let options = TileableOptions {
+fn read_tileable_options(options: &JsValue) -> JsResult<TileableOptions> {
+    let js = OptionsReader::new(options, &["overlapX", "overlapY"])?;
+    Ok(TileableOptions {
         overlap_x: js.integer("overlapX", 0, 4096)?.map(|v| v as usize),
         overlap_y: js.integer("overlapY", 0, 4096)?.map(|v| v as usize),
-    };
-    let t = crate::methods::design::make_tileable(exemplar.image(), options)?;
+    })
+}
+
+fn tileable_object(t: &Tileable) -> JsValue {
     let seam: Vec<u8> = t
         .seam
         .iter()
         .flat_map(|&s| if s { [255, 40, 40, 255] } else { [0, 0, 0, 0] })
         .collect();
-    Ok(object(&[
-        ("exemplar", Exemplar::from_image(t.image).into()),
+    object(&[
+        ("exemplar", Exemplar::from_image(t.image.clone()).into()),
         ("cutX", (t.cut_x as u32).into()),
         ("cutY", (t.cut_y as u32).into()),
         ("seamCostX", t.seam_cost_x.into()),
         ("seamCostY", t.seam_cost_y.into()),
         ("seam", Uint8ClampedArray::from(seam.as_slice()).into()),
-    ]))
+    ])
+}
+
+/// Makes an image cyclic (section 4) in one call: `makeTileable(exemplar, { overlapX, overlapY
+/// })` (defaults: a sixth of each side, at most 64). Returns `{ exemplar, cutX, cutY, seamCostX,
+/// seamCostY, seam }` (`seam`: RGBA, red on the stitches); the image is smaller than the input
+/// by the overlaps. For large images use `TileableSession`, which makes one stitch per step.
+#[wasm_bindgen(js_name = makeTileable)]
+pub fn make_tileable(exemplar: &Exemplar, options: JsValue) -> JsResult<JsValue> {
+    let t =
+        crate::methods::design::make_tileable(exemplar.image(), read_tileable_options(&options)?)?;
+    Ok(tileable_object(&t))
+}
+
+/// Making an image cyclic one graph cut per step: the horizontal stitch, then the vertical.
+#[wasm_bindgen]
+pub struct TileableSession {
+    session: crate::methods::design::TileableSession,
+}
+
+#[wasm_bindgen]
+impl TileableSession {
+    /// `new TileableSession(exemplar, { overlapX, overlapY })`.
+    #[wasm_bindgen(constructor)]
+    pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<TileableSession> {
+        Ok(TileableSession {
+            session: crate::methods::design::TileableSession::new(
+                exemplar.image(),
+                read_tileable_options(&options)?,
+            )?,
+        })
+    }
+
+    /// Makes the next stitch: `{ kind: 'stitched' | 'done', done, axis: 'x' | 'y', cut,
+    /// seamCost }`.
+    pub fn step(&mut self) -> JsResult<JsValue> {
+        let e = self.session.step()?;
+        Ok(object(&[
+            ("kind", if e.done { "done" } else { "stitched" }.into()),
+            ("done", e.done.into()),
+            ("axis", if e.vertical { "y" } else { "x" }.into()),
+            ("cut", (e.cut as u32).into()),
+            ("seamCost", e.seam_cost.into()),
+        ]))
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn done(&self) -> bool {
+        self.session.is_done()
+    }
+
+    /// Size of the image as far as it is made (it shrinks by the overlap at each stitch).
+    #[wasm_bindgen(getter)]
+    pub fn width(&self) -> u32 {
+        self.session.image().width() as u32
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn height(&self) -> u32 {
+        self.session.image().height() as u32
+    }
+
+    #[wasm_bindgen(js_name = renderInto)]
+    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        render_into(self.session.image(), target)
+    }
+
+    /// The finished texture, as `makeTileable` returns it.
+    pub fn result(&self) -> JsResult<JsValue> {
+        self.session
+            .result()
+            .map(tileable_object)
+            .ok_or_else(|| invalid("tileable session", "is not done: step() until done"))
+    }
 }
 
 /// Local deformation with a brush (stage 2): paint over texture elements of a reference, drag

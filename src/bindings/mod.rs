@@ -12,7 +12,9 @@ mod options;
 mod pixels;
 mod quality;
 
-pub use design::{LayerDesign, TextureBrush, deform_texture, deformation_set, make_tileable};
+pub use design::{
+    LayerDesign, TextureBrush, TileableSession, deform_texture, deformation_set, make_tileable,
+};
 pub use exemplar::Exemplar;
 pub use flow::{FlowAnimation, flow_field};
 pub use graphcut::GraphcutTextures;

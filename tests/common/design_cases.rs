@@ -4,7 +4,8 @@
 
 use js_sys::{Array, Uint8ClampedArray};
 use texsynth::bindings::{
-    Exemplar, LayerDesign, TextureBrush, deform_texture, deformation_set, make_tileable,
+    Exemplar, LayerDesign, TextureBrush, TileableSession, deform_texture, deformation_set,
+    make_tileable,
 };
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test;
@@ -208,4 +209,20 @@ fn make_tileable_returns_a_seamless_smaller_texture() {
     );
     let tiny = Exemplar::from_rgba(&[0; 8 * 8 * 4], 8, 8).unwrap();
     assert!(error_message(make_tileable(&tiny, JsValue::UNDEFINED)).contains("at least 16"));
+    assert!(error_message(TileableSession::new(&tiny, JsValue::UNDEFINED)).contains("at least 16"));
+}
+
+#[wasm_bindgen_test]
+fn a_tileable_session_makes_one_stitch_per_step() {
+    let ex = Exemplar::from_bytes(TILES_64).unwrap();
+    let mut s = TileableSession::new(&ex, JsValue::UNDEFINED).unwrap();
+    assert!(error_message(s.result()).contains("not done"));
+    let first = s.step().unwrap();
+    assert_eq!(get(&first, "axis").as_string().unwrap(), "x");
+    assert_eq!((s.width(), s.height()), (54, 64));
+    let second = s.step().unwrap();
+    assert_eq!(get(&second, "kind").as_string().unwrap(), "done");
+    assert!(s.done());
+    assert_eq!((s.width(), s.height()), (54, 54));
+    assert!(get(&s.result().unwrap(), "cutY").as_f64().is_some());
 }

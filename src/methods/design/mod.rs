@@ -15,4 +15,4 @@ pub use deform::{Deformation, DeformationRanges, Steps, deform};
 pub use labelling::LabellingWeights;
 pub use local::{BrushOptions, LocalDeformation, Stroke, StrokeResult};
 pub mod tileable;
-pub use tileable::{Tileable, TileableOptions, make_tileable};
+pub use tileable::{Tileable, TileableEvent, TileableOptions, TileableSession, make_tileable};

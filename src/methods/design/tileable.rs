@@ -16,9 +16,9 @@ use crate::solvers::maxflow::{Graph, HARD_CONSTRAINT};
 /// The overlaps of the two stitches.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct TileableOptions {
-    /// m_h: columns the halves overlap. Default (None): a sixth of the width.
+    /// m_h: columns the halves overlap. Default (None): a sixth of the width, at most 64.
     pub overlap_x: Option<usize>,
-    /// m_v: rows the halves overlap. Default (None): a sixth of the height.
+    /// m_v: rows the halves overlap. Default (None): a sixth of the height, at most 64.
     pub overlap_y: Option<usize>,
 }
 
@@ -40,9 +40,14 @@ pub struct Tileable {
     pub seam: Vec<bool>,
 }
 
+/// Most columns (rows) an overlap takes by default. The seam has room enough in 64 pixels, and
+/// the cut's cost grows with the overlap: at 1024x1024 the default of a sixth (170) took 526 ms
+/// against 134 ms for 64, with seams no more costly (66 + 64 against 62 + 85).
+pub const DEFAULT_MAX_OVERLAP: usize = 64;
+
 fn overlap(len: usize, asked: Option<usize>, name: &'static str) -> Result<usize> {
     let max = len / 4 - 1;
-    let m = asked.unwrap_or((len / 6).clamp(2, max));
+    let m = asked.unwrap_or((len / 6).clamp(2, max.min(DEFAULT_MAX_OVERLAP)));
     if m < 2 || m > max {
         return Err(Error::InvalidParameter {
             name,
@@ -52,44 +57,129 @@ fn overlap(len: usize, asked: Option<usize>, name: &'static str) -> Result<usize
     Ok(m)
 }
 
-/// Makes `image` tileable (section 4's four steps).
-pub fn make_tileable(image: &Image, options: TileableOptions) -> Result<Tileable> {
-    let (w, h) = (image.width(), image.height());
-    if w < MIN_SIDE || h < MIN_SIDE {
-        return Err(Error::InvalidSize {
-            what: "image to make tileable",
-            width: w,
-            height: h,
-            reason: format!("each side must be at least {MIN_SIDE} pixels"),
-        });
-    }
-    let m_h = overlap(w, options.overlap_x, "overlapX")?;
-    let m_v = overlap(h, options.overlap_y, "overlapY")?;
-    let mut graph = Graph::new(1)?;
-    // Steps 1-2: rearrange as I_h1 | I_h2 and stitch them over m_h columns.
-    let (horizontal, cut_x, seam_cost_x, seam_x) = open_and_stitch(image, m_h, false, &mut graph)?;
-    // Steps 3-4: the same on rows (on the transpose), wrapping along the first stitch's axis.
-    let (vertical, cut_y, seam_cost_y, seam_y) =
-        open_and_stitch(&transpose(&horizontal), m_v, true, &mut graph)?;
-    let result = transpose(&vertical);
-    let (ow, oh) = (result.width(), result.height());
-    // Output pixel (x, y) is the transpose's (y, x), which came from row `source` of the
-    // horizontally stitched image.
-    let seam = (0..ow * oh)
-        .map(|i| {
-            let (x, y) = (i % ow, i / ow);
-            let t = x * oh + y;
-            seam_y.seam[t] || seam_x.seam[seam_y.source[t] * ow + x]
+/// Which stitch a step made.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TileableEvent {
+    /// False for the horizontal stitch (steps 1-2), true for the vertical one (steps 3-4).
+    pub vertical: bool,
+    /// Where the image was cut open.
+    pub cut: usize,
+    pub seam_cost: f64,
+    pub done: bool,
+}
+
+/// Making an image tileable in two steps (each a graph cut), so that a page can draw between
+/// them: the horizontal stitch, then the vertical one.
+pub struct TileableSession {
+    input: Image,
+    m_h: usize,
+    m_v: usize,
+    graph: Graph,
+    horizontal: Option<(Image, usize, f64, Stitch)>,
+    result: Option<Tileable>,
+}
+
+impl TileableSession {
+    /// Validates the size and the overlaps.
+    pub fn new(image: &Image, options: TileableOptions) -> Result<Self> {
+        let (w, h) = (image.width(), image.height());
+        if w < MIN_SIDE || h < MIN_SIDE {
+            return Err(Error::InvalidSize {
+                what: "image to make tileable",
+                width: w,
+                height: h,
+                reason: format!("each side must be at least {MIN_SIDE} pixels"),
+            });
+        }
+        Ok(TileableSession {
+            m_h: overlap(w, options.overlap_x, "overlapX")?,
+            m_v: overlap(h, options.overlap_y, "overlapY")?,
+            input: image.clone(),
+            graph: Graph::new(1)?,
+            horizontal: None,
+            result: None,
         })
-        .collect();
-    Ok(Tileable {
-        image: result,
-        cut_x,
-        cut_y,
-        seam_cost_x,
-        seam_cost_y,
-        seam,
-    })
+    }
+
+    #[must_use]
+    pub fn is_done(&self) -> bool {
+        self.result.is_some()
+    }
+
+    /// The image as far as it is made: the input, then horizontally stitched, then the result.
+    #[must_use]
+    pub fn image(&self) -> &Image {
+        match (&self.result, &self.horizontal) {
+            (Some(t), _) => &t.image,
+            (None, Some(h)) => &h.0,
+            (None, None) => &self.input,
+        }
+    }
+
+    /// The finished texture (None until both stitches are made).
+    #[must_use]
+    pub fn result(&self) -> Option<&Tileable> {
+        self.result.as_ref()
+    }
+
+    /// Makes the next stitch.
+    pub fn step(&mut self) -> Result<TileableEvent> {
+        if let Some(t) = &self.result {
+            return Ok(TileableEvent {
+                vertical: true,
+                cut: t.cut_y,
+                seam_cost: t.seam_cost_y,
+                done: true,
+            });
+        }
+        let Some((horizontal, cut_x, seam_cost_x, seam_x)) = self.horizontal.take() else {
+            // Steps 1-2: rearrange as I_h1 | I_h2 and stitch them over m_h columns.
+            let made = open_and_stitch(&self.input, self.m_h, false, &mut self.graph)?;
+            let event = TileableEvent {
+                vertical: false,
+                cut: made.1,
+                seam_cost: made.2,
+                done: false,
+            };
+            self.horizontal = Some(made);
+            return Ok(event);
+        };
+        // Steps 3-4: the same on rows (on the transpose), wrapping along the first stitch's axis.
+        let (vertical, cut_y, seam_cost_y, seam_y) =
+            open_and_stitch(&transpose(&horizontal), self.m_v, true, &mut self.graph)?;
+        let result = transpose(&vertical);
+        let (ow, oh) = (result.width(), result.height());
+        // Output pixel (x, y) is the transpose's (y, x), which came from row `source` of the
+        // horizontally stitched image.
+        let seam = (0..ow * oh)
+            .map(|i| {
+                let (x, y) = (i % ow, i / ow);
+                let t = x * oh + y;
+                seam_y.seam[t] || seam_x.seam[seam_y.source[t] * ow + x]
+            })
+            .collect();
+        self.result = Some(Tileable {
+            image: result,
+            cut_x,
+            cut_y,
+            seam_cost_x,
+            seam_cost_y,
+            seam,
+        });
+        Ok(TileableEvent {
+            vertical: true,
+            cut: cut_y,
+            seam_cost: seam_cost_y,
+            done: true,
+        })
+    }
+}
+
+/// Makes `image` tileable (section 4's four steps) in one call.
+pub fn make_tileable(image: &Image, options: TileableOptions) -> Result<Tileable> {
+    let mut session = TileableSession::new(image, options)?;
+    while !session.step()?.done {}
+    Ok(session.result.expect("done"))
 }
 
 /// Per pixel of a stitched image: the input column it shows, and whether it lies on the seam.
@@ -266,6 +356,26 @@ mod tests {
             }
         }
         assert!(t.seam.iter().any(|&s| s));
+    }
+
+    #[test]
+    fn the_session_stitches_horizontally_then_vertically() {
+        let img = noise(48, 40, 3, 3);
+        let mut s = TileableSession::new(&img, TileableOptions::default()).unwrap();
+        assert_eq!(s.image(), &img);
+        let first = s.step().unwrap();
+        assert!(!first.vertical && !first.done && !s.is_done());
+        assert_eq!((s.image().width(), s.image().height()), (40, 40));
+        let second = s.step().unwrap();
+        assert!(second.vertical && second.done);
+        assert_eq!((s.image().width(), s.image().height()), (40, 34));
+        assert_eq!(
+            s.step().unwrap(),
+            second,
+            "stepping after done repeats the last event"
+        );
+        let once = make_tileable(&img, TileableOptions::default()).unwrap();
+        assert_eq!(s.result().unwrap(), &once);
     }
 
     #[test]

@@ -1,7 +1,7 @@
 // Cyclic textures (Shen et al. 2009, section 4): the base is cut open along its most seamless
 // line, its old edges are stitched by graph cuts, horizontally then vertically, and the result
-// is previewed tiled 3x3.
-import { makeTileable } from '../../pkg/texsynth.js';
+// is previewed tiled 3x3. One stitch (one graph cut) per step.
+import { TileableSession } from '../../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../../lib/canvas.js';
 
 export const id = 'tileable';
@@ -30,34 +30,26 @@ export function createStage({ ui, gallery, readout }) {
     }
   }
 
-  function make() {
-    const item = gallery.baseItem;
-    if (!item) return;
-    const start = performance.now();
-    try {
-      const overlap = Number(ui.$('dt-overlap').value);
-      const options = overlap > 0 ? { overlapX: overlap, overlapY: overlap } : undefined;
-      result = makeTileable(item.exemplar, options);
-      const ms = performance.now() - start;
-      preview(result.exemplar, result.seam);
-      readout(`tileable ${result.exemplar.width}×${result.exemplar.height} in ${ms.toFixed(0)} ms · ` +
-        `cut at column ${result.cutX}, row ${result.cutY} · seam costs ${result.seamCostX.toFixed(2)} + ${result.seamCostY.toFixed(2)}`);
-      gallery.add(`${item.label} · tileable`, result.exemplar);
-      document.body.dataset.tileable = 'true';
-    } catch (error) {
-      readout(error.message);
-    }
+  let session = null;
+  let started = 0;
+
+  function begin() {
+    session?.free();
+    result = null;
+    const overlap = Number(ui.$('dt-overlap').value);
+    session = new TileableSession(gallery.baseItem.exemplar, overlap > 0 ? { overlapX: overlap, overlapY: overlap } : undefined);
+    started = performance.now();
   }
 
   return {
-    hint: 'makes the base tileable; the preview shows it tiled 3×3 (the seams marked in the middle tile)',
+    hint: 'makes the base tileable, one graph cut per step; the preview shows it tiled 3×3',
     optionsHtml: `
       <label title="overlap of the stitches in pixels; 0 = a sixth of each side">overlap <input id="dt-overlap" class="view" type="number" value="0" min="0" max="512"></label>
       <label><input id="dt-seams" class="view" type="checkbox"> show seams</label>
       <button id="dt-make" type="button">Make tileable</button>
       <button id="dt-plain" type="button" title="the base tiled as it is, for comparison">Tile the base as is</button>`,
     mount() {
-      ui.$('dt-make').addEventListener('click', make);
+      ui.$('dt-make').addEventListener('click', () => { this.reset(); ui.run(); });
       ui.$('dt-plain').addEventListener('click', () => {
         if (gallery.baseItem) preview(gallery.baseItem.exemplar, null);
         readout('the base tiled as it is: its edges show as lines');
@@ -65,7 +57,32 @@ export function createStage({ ui, gallery, readout }) {
       ui.$('dt-seams').addEventListener('change', () => result && preview(result.exemplar, result.seam));
       this.reset();
     },
+    step() {
+      if (!gallery.baseItem) return null;
+      if (!session) begin();
+      return session.done ? null : session.step();
+    },
+    onStep(event) {
+      const ms = performance.now() - started;
+      if (!event.done) {
+        drawInto(ui.outputCanvas, session);
+        readout(`stitched the ${event.axis === 'x' ? 'left and right' : 'top and bottom'} edges (cut at ${event.cut}) · seam cost ${event.seamCost.toFixed(2)} · ${ms.toFixed(0)} ms`);
+        return;
+      }
+      result = session.result();
+      preview(result.exemplar, result.seam);
+      readout(`tileable ${result.exemplar.width}×${result.exemplar.height} in ${ms.toFixed(0)} ms · ` +
+        `cut at column ${result.cutX}, row ${result.cutY} · seam costs ${result.seamCostX.toFixed(2)} + ${result.seamCostY.toFixed(2)}`);
+      gallery.add(`${gallery.baseItem.label} · tileable`, result.exemplar);
+      document.body.dataset.tileable = 'true';
+    },
+    unmount() {
+      session?.free();
+      session = null;
+    },
     reset() {
+      session?.free();
+      session = null;
       result = null;
       delete document.body.dataset.tileable;
       if (gallery.baseItem) drawInto(ui.outputCanvas, gallery.baseItem.exemplar);
