@@ -2,7 +2,8 @@
 # Benchmarks every method natively and as wasm in Node, 256x256 from the samples (flow animation:
 # frames per second at 128x128 and 256x256, wasm in Node):
 # texture optimisation with each nearest-neighbour search, graph-cut textures with each placement
-# mode, and the max-flow solver against the reference. The exact search takes minutes on the
+# mode, the max-flow solver against the reference, and texture design (scripts/bench-design.mjs:
+# layer-based design with QTP against exhaustive search, tileable textures, a brush stroke). The exact search takes minutes on the
 # 128x128 sample; choose searches with SEARCHES=patchmatch,kmeans-tree and samples with
 # SAMPLES=gravel_128,gravel_64 (the defaults: all three searches, gravel 128 and 64).
 set -euo pipefail
@@ -19,3 +20,5 @@ node scripts/bench.mjs --samples "$SAMPLES" --searches "$SEARCHES"
 echo
 echo "max-flow on seam graphs, native, against the reference (Dinic) solver:"
 cargo test --release --lib -q -- --ignored --nocapture maxflow_timing 2>/dev/null | grep -vE "^(running|test |$)|test result"
+echo
+node scripts/bench-design.mjs
