@@ -1,7 +1,9 @@
 //! Layer 2: the reusable numerical pieces the methods are built from. Each is tested against a
 //! slow, obvious oracle.
 
+pub mod distance;
 pub mod fft_ssd;
 pub mod maxflow;
 pub mod nn;
 pub mod poisson;
+pub mod tps;
