@@ -1,6 +1,7 @@
 //! Layer 3: one module per paper's feature set, each a progressive session built on the solvers.
 
 pub mod design;
+pub mod features;
 pub mod flow;
 pub mod graphcut;
 pub mod optimization;

@@ -1,0 +1,323 @@
+//! Feature maps (Wu & Yu 2004, section 2.3): curvilinear edges and ridges as one-pixel-wide
+//! curves, each pixel with its smoothed tangent, its orientation bucket and its colour.
+//!
+//! Bilateral filter (sigma_d = 2, sigma_r = 10/256) on the grey image; edge response = gradient
+//! magnitude by central differences, ridge response = |Laplacian|; a two-pass classification
+//! (strong: at least the global high threshold, a percentile of the responses; weak: within 2
+//! pixels of a strong pixel of response R and at least alpha R); then thinning, weakest first.
+//! The tangent is the direction across the dominant gradient of the structure tensor smoothed over
+//! 5x5, so a ridge's centre, where the gradient vanishes, still gets its line's direction.
+
+use super::bilateral::bilateral;
+use super::thinning::thin;
+use crate::core::{Error, Image, Result};
+
+/// Which curves make the map.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FeatureKind {
+    /// Boundaries between regions (stone outlines, plank edges).
+    Edges,
+    /// Thin lines, dark or bright (mortar, grout, cracks).
+    Ridges,
+    /// Both, thinned together.
+    Both,
+}
+
+/// Options of the detector.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DetectOptions {
+    /// Default: ridges (the thin lines of tiles, bricks and planks give one curve, where edges
+    /// give two, one either side).
+    pub kind: FeatureKind,
+    /// The global high threshold as a fraction of the responses below it. Default: 0.9 (the
+    /// strongest 10% are strong features).
+    pub percentile: f32,
+    /// Weak features: at least alpha times a nearby strong response. Default: 0.3 (the paper's).
+    pub alpha: f32,
+}
+
+impl Default for DetectOptions {
+    fn default() -> Self {
+        DetectOptions {
+            kind: FeatureKind::Ridges,
+            percentile: 0.9,
+            alpha: 0.3,
+        }
+    }
+}
+
+impl DetectOptions {
+    pub fn validate(&self) -> Result<()> {
+        if !self.percentile.is_finite() || !(0.5..=0.999).contains(&self.percentile) {
+            return Err(Error::InvalidParameter {
+                name: "threshold",
+                reason: format!(
+                    "must be a percentile between 0.5 and 0.999, got {}",
+                    self.percentile
+                ),
+            });
+        }
+        if !self.alpha.is_finite() || !(0.0..=1.0).contains(&self.alpha) {
+            return Err(Error::InvalidParameter {
+                name: "alpha",
+                reason: format!("must be between 0 and 1, got {}", self.alpha),
+            });
+        }
+        Ok(())
+    }
+}
+
+/// Number of orientation buckets (section 2.1).
+pub const BUCKETS: usize = 4;
+
+/// A feature map: the curves and, at every pixel, the tangent angle in 0..pi and its bucket (so
+/// that a pixel painted on by hand gets the orientation of the image there).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FeatureMap {
+    pub width: usize,
+    pub height: usize,
+    pub mask: Vec<bool>,
+    pub angle: Vec<f32>,
+    pub response: Vec<f32>,
+    /// The absolute high threshold used (to detect on other images the same way).
+    pub threshold: f32,
+}
+
+/// The bucket of a tangent angle in 0..pi: four intervals of pi/4, the first centred on the
+/// horizontal.
+#[must_use]
+pub fn bucket(angle: f32) -> usize {
+    let a = (angle + std::f32::consts::FRAC_PI_8).rem_euclid(std::f32::consts::PI);
+    ((a / std::f32::consts::FRAC_PI_4) as usize).min(BUCKETS - 1)
+}
+
+/// The unsigned difference of two tangents as unit vectors, |v1 - v2| with the sign of v2
+/// chosen to make it smallest (a tangent has no direction).
+#[must_use]
+pub fn tangent_difference(a: f32, b: f32) -> f32 {
+    let d = (a - b).abs().rem_euclid(std::f32::consts::PI);
+    let d = d.min(std::f32::consts::PI - d);
+    2.0 * (d / 2.0).sin()
+}
+
+fn grey(image: &Image) -> Vec<f32> {
+    let c = image.channels();
+    image
+        .data()
+        .chunks_exact(c)
+        .map(|p| match c {
+            1 | 2 => p[0],
+            _ => 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2],
+        })
+        .collect()
+}
+
+/// Responses and tangent angles of an image.
+fn responses(image: &Image, kind: FeatureKind) -> (Vec<f32>, Vec<f32>) {
+    let (w, h) = (image.width(), image.height());
+    let g = bilateral(&grey(image), w, h, 2.0, 10.0 / 256.0);
+    let at = |x: isize, y: isize| {
+        g[(y.clamp(0, h as isize - 1) as usize) * w + x.clamp(0, w as isize - 1) as usize]
+    };
+    let mut gx = vec![0.0f32; w * h];
+    let mut gy = vec![0.0f32; w * h];
+    let mut response = vec![0.0f32; w * h];
+    for y in 0..h as isize {
+        for x in 0..w as isize {
+            let i = y as usize * w + x as usize;
+            gx[i] = 0.5 * (at(x + 1, y) - at(x - 1, y));
+            gy[i] = 0.5 * (at(x, y + 1) - at(x, y - 1));
+            let edge = gx[i].hypot(gy[i]);
+            let ridge =
+                (at(x + 1, y) + at(x - 1, y) + at(x, y + 1) + at(x, y - 1) - 4.0 * at(x, y)).abs();
+            response[i] = match kind {
+                FeatureKind::Edges => edge,
+                FeatureKind::Ridges => ridge,
+                FeatureKind::Both => edge.max(ridge),
+            };
+        }
+    }
+    // Structure tensor over 5x5, then the tangent across the dominant gradient.
+    let mut angle = vec![0.0f32; w * h];
+    for y in 0..h as isize {
+        for x in 0..w as isize {
+            let (mut jxx, mut jxy, mut jyy) = (0.0f32, 0.0f32, 0.0f32);
+            for dy in -2..=2 {
+                for dx in -2..=2 {
+                    let (xx, yy) = (
+                        (x + dx).clamp(0, w as isize - 1),
+                        (y + dy).clamp(0, h as isize - 1),
+                    );
+                    let j = yy as usize * w + xx as usize;
+                    jxx += gx[j] * gx[j];
+                    jxy += gx[j] * gy[j];
+                    jyy += gy[j] * gy[j];
+                }
+            }
+            let gradient = 0.5 * (2.0 * jxy).atan2(jxx - jyy);
+            angle[y as usize * w + x as usize] =
+                (gradient + std::f32::consts::FRAC_PI_2).rem_euclid(std::f32::consts::PI);
+        }
+    }
+    (response, angle)
+}
+
+/// Detects the feature map of `image`.
+pub fn detect(image: &Image, options: DetectOptions) -> Result<FeatureMap> {
+    options.validate()?;
+    let (response, angle) = responses(image, options.kind);
+    let mut sorted = response.clone();
+    sorted.sort_by(f32::total_cmp);
+    let index = ((sorted.len() - 1) as f32 * options.percentile).round() as usize;
+    // Never below a floor: a flat image has no features, not noise promoted to features.
+    let threshold = sorted[index].max(1e-3);
+    Ok(classify(
+        image.width(),
+        image.height(),
+        response,
+        angle,
+        threshold,
+        options.alpha,
+    ))
+}
+
+/// Detects with a given absolute high threshold (the exemplar's), so that an output is judged by
+/// the exemplar's standard.
+pub fn detect_with_threshold(
+    image: &Image,
+    kind: FeatureKind,
+    threshold: f32,
+    alpha: f32,
+) -> FeatureMap {
+    let (response, angle) = responses(image, kind);
+    classify(
+        image.width(),
+        image.height(),
+        response,
+        angle,
+        threshold,
+        alpha,
+    )
+}
+
+fn classify(
+    w: usize,
+    h: usize,
+    response: Vec<f32>,
+    angle: Vec<f32>,
+    threshold: f32,
+    alpha: f32,
+) -> FeatureMap {
+    let strong: Vec<bool> = response.iter().map(|&r| r >= threshold).collect();
+    let mut mask = strong.clone();
+    // Second pass: weaker responses near a strong one, against a threshold set by it.
+    for y in 0..h {
+        for x in 0..w {
+            let i = y * w + x;
+            if !strong[i] {
+                continue;
+            }
+            let low = alpha * response[i];
+            for yy in y.saturating_sub(2)..(y + 3).min(h) {
+                for xx in x.saturating_sub(2)..(x + 3).min(w) {
+                    let j = yy * w + xx;
+                    if response[j] >= low {
+                        mask[j] = true;
+                    }
+                }
+            }
+        }
+    }
+    thin(&mut mask, &response, w, h);
+    FeatureMap {
+        width: w,
+        height: h,
+        mask,
+        angle,
+        response,
+        threshold,
+    }
+}
+
+impl FeatureMap {
+    /// Feature pixels.
+    #[must_use]
+    pub fn count(&self) -> usize {
+        self.mask.iter().filter(|&&m| m).count()
+    }
+
+    /// Paints (true) or erases (false) a disc of `radius` at (x, y), as the paper allows the
+    /// designer to correct the map.
+    pub fn paint(&mut self, x: f32, y: f32, radius: f32, on: bool) {
+        let r = radius.max(0.5);
+        for yy in (y - r).floor().max(0.0) as usize..((y + r).ceil() as usize + 1).min(self.height)
+        {
+            for xx in
+                (x - r).floor().max(0.0) as usize..((x + r).ceil() as usize + 1).min(self.width)
+            {
+                if (xx as f32 - x).hypot(yy as f32 - y) <= r {
+                    self.mask[yy * self.width + xx] = on;
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::testing::sample;
+    use crate::methods::features::thinning::components;
+
+    #[test]
+    fn buckets_and_tangent_differences() {
+        use std::f32::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+        assert_eq!(bucket(0.0), 0);
+        assert_eq!(bucket(PI - 0.01), 0);
+        assert_eq!(bucket(FRAC_PI_4), 1);
+        assert_eq!(bucket(FRAC_PI_2), 2);
+        assert_eq!(bucket(3.0 * FRAC_PI_4), 3);
+        assert!(
+            tangent_difference(0.1, PI - 0.1) < 0.21,
+            "nearly the same line"
+        );
+        assert!((tangent_difference(0.0, FRAC_PI_2) - 2f32.sqrt()).abs() < 1e-5);
+    }
+
+    #[test]
+    fn a_drawn_grid_gives_thin_lines_with_their_orientations() {
+        // Dark grout lines every 16 pixels on a light field, with some noise.
+        let img = Image::from_fn(64, 64, 1, |x, y, _| {
+            let line = x % 16 == 8 || y % 16 == 8;
+            (if line { 0.2 } else { 0.8 }) + 0.01 * (((x * 31 + y * 17) % 7) as f32)
+        })
+        .unwrap();
+        let map = detect(&img, DetectOptions::default()).unwrap();
+        // Every grout pixel away from the crossings is found, one pixel wide.
+        for x in (0..64).filter(|x| (x % 16) > 10 || (x % 16) < 6) {
+            assert!(map.mask[8 * 64 + x], "horizontal line at x = {x}");
+            assert!(!map.mask[7 * 64 + x] && !map.mask[9 * 64 + x]);
+            assert_eq!(bucket(map.angle[8 * 64 + x]), 0, "horizontal tangent");
+            assert_eq!(bucket(map.angle[x * 64 + 8]), 2, "vertical tangent");
+        }
+        assert_eq!(components(&map.mask, 64, 64), 1, "one connected grid");
+    }
+
+    #[test]
+    fn real_textures_have_features_and_flat_ones_do_not() {
+        let tiles = detect(&sample("tiles_64"), DetectOptions::default()).unwrap();
+        assert!(tiles.count() > 100, "{}", tiles.count());
+        let flat = Image::from_fn(32, 32, 3, |_, _, _| 0.5).unwrap();
+        assert_eq!(detect(&flat, DetectOptions::default()).unwrap().count(), 0);
+        let bad = DetectOptions {
+            percentile: 2.0,
+            ..DetectOptions::default()
+        };
+        assert!(
+            detect(&flat, bad)
+                .unwrap_err()
+                .to_string()
+                .contains("threshold")
+        );
+    }
+}

@@ -1,0 +1,10 @@
+//! Feature-guided texture synthesis (Wu & Yu 2004): detect curvilinear features (`detect`, with
+//! the `bilateral` filter and `thinning`), match them in position and orientation (`matching`),
+//! bend the chosen patch so its features meet the placed ones (`alignment`), and grow the texture
+//! and its feature map together (`session`).
+
+pub mod bilateral;
+pub mod detect;
+pub mod thinning;
+
+pub use detect::{DetectOptions, FeatureKind, FeatureMap, detect};
