@@ -5,3 +5,4 @@ pub mod fft_ssd;
 pub mod maxflow;
 pub mod nn;
 pub mod poisson;
+pub mod wavelet;
