@@ -156,20 +156,19 @@ impl Options {
                 format!("must be between 0 and 1000, got {w}"),
             );
         }
-        if self.energy != Energy::Pixels {
-            if let Some(&bad) = self
+        if self.energy != Energy::Pixels
+            && let Some(&bad) = self
                 .neighbourhood_sizes
                 .iter()
                 .find(|&&s| s < 4 || !s.is_power_of_two())
-            {
-                return invalid(
-                    "neighbourhoodSizes",
-                    format!(
-                        "energy '{}' needs powers of two from 4 (the wavelet blocks), got {bad}",
-                        self.energy.name()
-                    ),
-                );
-            }
+        {
+            return invalid(
+                "neighbourhoodSizes",
+                format!(
+                    "energy '{}' needs powers of two from 4 (the wavelet blocks), got {bad}",
+                    self.energy.name()
+                ),
+            );
         }
         Ok(())
     }
