@@ -100,11 +100,11 @@ fn forward_1d(
     n: usize,
     scratch: &mut [f32],
 ) {
-    let half = n / 2;
+    let (half, mask) = (n / 2, n - 1); // n is a power of two: `& mask` is the periodic wrap
     for i in 0..half {
         let (mut a, mut d) = (0.0, 0.0);
         for k in 0..f.taps {
-            let v = data[base + ((2 * i + k) % n) * stride];
+            let v = data[base + ((2 * i + k) & mask) * stride];
             a += f.h[k] * v;
             d += f.g[k] * v;
         }
@@ -125,13 +125,13 @@ fn inverse_1d(
     n: usize,
     scratch: &mut [f32],
 ) {
-    let half = n / 2;
+    let (half, mask) = (n / 2, n - 1);
     scratch[..n].fill(0.0);
     for i in 0..half {
         let a = data[base + i * stride];
         let d = data[base + (half + i) * stride];
         for k in 0..f.taps {
-            scratch[(2 * i + k) % n] += f.h[k] * a + f.g[k] * d;
+            scratch[(2 * i + k) & mask] += f.h[k] * a + f.g[k] * d;
         }
     }
     for (i, &v) in scratch[..n].iter().enumerate() {
