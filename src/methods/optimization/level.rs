@@ -394,6 +394,11 @@ impl LevelSolver {
         constraint: Option<&Constraint>,
     ) -> usize {
         let r = self.setup.r;
+        // With a wavelet energy the E-step stays this pixel average (the matches, chosen under
+        // eq. 4, carry the wavelet term): the exact minimiser of eq. 4 over x with weighted
+        // coefficients is a linear solve with W^T D W, which is not diagonal (a block-coupled
+        // system per neighbourhood), and with all weights 1 it is the pixel average anyway
+        // (Parseval). The IRLS weights below come from the full eq. 4 distances.
         // IRLS: weights from the last distances (all 1 before the first M-step).
         let weights: Vec<f32> = self
             .distances
