@@ -12,7 +12,7 @@ use super::pixels::render_into;
 use crate::core::{Error, from_rgba8};
 use crate::methods::optimization::SoftConstraints;
 use crate::methods::optimization::teaching::{Field, field, offset_map};
-use crate::methods::optimization::{Event, EventKind, Options, Session};
+use crate::methods::optimization::{Energy, Event, EventKind, Options, Session};
 use crate::solvers::nn::Search;
 
 const KNOWN: &[&str] = &[
@@ -28,6 +28,8 @@ const KNOWN: &[&str] = &[
     "tileable",
     "completeness",
     "histogramMatching",
+    "energy",
+    "waveletDetailWeight",
 ];
 
 /// Reads the options object; absent keys keep the defaults of [`Options`].
@@ -41,7 +43,18 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
             reason: format!("must be 'patchmatch', 'kmeans-tree' or 'exact', got '{name}'"),
         })?,
     };
+    let energy = match js.string("energy")? {
+        None => d.energy,
+        Some(name) => Energy::from_name(&name).ok_or_else(|| Error::InvalidParameter {
+            name: "energy",
+            reason: format!("must be 'pixels', 'haar' or 'daubechies', got '{name}'"),
+        })?,
+    };
     Ok(Options {
+        energy,
+        wavelet_detail_weight: js
+            .number("waveletDetailWeight")?
+            .map_or(d.wavelet_detail_weight, |v| v as f32),
         output_width: js
             .integer("outputWidth", 1, 1 << 20)?
             .map_or(d.output_width, |v| v as usize),
@@ -89,6 +102,7 @@ fn event_object(e: &Event) -> JsValue {
         ("neighbourhoodSize", (e.size as u32).into()),
         ("iteration", (e.iteration as u32).into()),
         ("energy", e.energy.into()),
+        ("matchEnergy", e.match_energy.into()),
         ("changed", (e.changed as u32).into()),
         ("totalIterations", (e.total_iterations as u32).into()),
         ("solverIterations", (e.solver_iterations as u32).into()),
@@ -106,7 +120,10 @@ impl TextureOptimization {
     /// Plans the schedule for `exemplar` and `options` (all optional): `outputWidth`,
     /// `outputHeight` (256), `seed` (1), `levels` (3), `neighbourhoodSizes` ([32, 16, 8]),
     /// `iterations` per level (5), `r` (0.8), `mu` (0), `search` ('patchmatch' | 'kmeans-tree' |
-    /// 'exact'), `tileable` (false). Unknown keys and impossible values throw.
+    /// 'exact'), `tileable` (false), `completeness` (1), `histogramMatching` (1), `energy`
+    /// ('pixels' | 'haar' | 'daubechies', default 'pixels': the wavelet texture energy of Shen
+    /// et al. 2009), `waveletDetailWeight` (weight of the wavelet detail bands, default 4).
+    /// Unknown keys and impossible values throw.
     #[wasm_bindgen(constructor)]
     pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<TextureOptimization> {
         let options = read_options(&options)?;
@@ -116,8 +133,11 @@ impl TextureOptimization {
     }
 
     /// Runs one EM iteration. Returns `{ kind: 'level' | 'iteration' | 'done', done, level,
-    /// levelCount, octave, scale, neighbourhoodSize, iteration, energy, changed, totalIterations,
-    /// solverIterations }` (solverIterations: the gradient solve's conjugate-gradient iterations).
+    /// levelCount, octave, scale, neighbourhoodSize, iteration, energy, matchEnergy, changed,
+    /// totalIterations, solverIterations }` (solverIterations: the gradient solve's
+    /// conjugate-gradient iterations; energy: the pixel term ||x_p - z_p||^r whatever the
+    /// `energy` option, so runs compare on one plot; matchEnergy: what the M-step minimised,
+    /// with the wavelet term, equal to energy for 'pixels').
     pub fn step(&mut self) -> JsResult<JsValue> {
         Ok(event_object(&self.session.step()?))
     }
@@ -142,6 +162,12 @@ impl TextureOptimization {
     #[wasm_bindgen(getter)]
     pub fn search(&self) -> String {
         self.session.options().search.name().into()
+    }
+
+    /// The texture energy in use: 'pixels', 'haar' or 'daubechies'.
+    #[wasm_bindgen(getter)]
+    pub fn energy(&self) -> String {
+        self.session.options().energy.name().into()
     }
 
     /// Writes the current output as RGBA8 into `target` (`width * height * 4` long).

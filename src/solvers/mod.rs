@@ -7,3 +7,4 @@ pub mod maxflow;
 pub mod nn;
 pub mod poisson;
 pub mod tps;
+pub mod wavelet;

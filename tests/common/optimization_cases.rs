@@ -117,3 +117,56 @@ fn bad_options_are_errors_that_name_them() {
     let target = Uint8ClampedArray::new_with_length(7);
     assert!(ok.render_into(&target).is_err());
 }
+
+#[wasm_bindgen_test]
+fn wavelet_energies_run_from_js_and_bad_values_are_named() {
+    let ex = Exemplar::from_bytes(GRAVEL_64).unwrap();
+    for energy in ["haar", "daubechies"] {
+        let opts = options(&[
+            ("outputWidth", 40.into()),
+            ("outputHeight", 40.into()),
+            ("iterations", 2.into()),
+            (
+                "neighbourhoodSizes",
+                Array::of2(&16.into(), &8.into()).into(),
+            ),
+            ("energy", energy.into()),
+            ("waveletDetailWeight", 8.into()),
+        ]);
+        let mut session = TextureOptimization::new(&ex, opts).unwrap();
+        assert_eq!(session.energy(), energy);
+        let mut steps = 0;
+        while !session.done() {
+            let event = session.step().unwrap();
+            // The reported energy is the pixel term; the M-step's adds the wavelet term.
+            let (e, m) = (
+                get(&event, "energy").as_f64().unwrap(),
+                get(&event, "matchEnergy").as_f64().unwrap(),
+            );
+            assert!(e > 0.0 && m > e, "{energy}: energy {e}, matchEnergy {m}");
+            steps += 1;
+            assert!(steps < 100, "the session finishes");
+        }
+        // Soft constraints need the pixel energy.
+        let paint = vec![255u8; 40 * 40 * 4];
+        let err = error_message(session.set_constraints(&paint, 1.0));
+        assert!(err.contains("invalid energy"), "{err}");
+    }
+    let plain = TextureOptimization::new(&ex, JsValue::UNDEFINED).unwrap();
+    assert_eq!(plain.energy(), "pixels");
+    let msg = |entries: &[(&str, JsValue)]| {
+        error_message(TextureOptimization::new(&ex, options(entries)))
+    };
+    assert!(msg(&[("energy", "db4".into())]).contains("invalid energy"));
+    assert!(msg(&[("energy", 2.into())]).contains("invalid energy"));
+    assert!(msg(&[("waveletDetailWeight", (-1).into())]).contains("invalid waveletDetailWeight"));
+    assert!(
+        msg(&[("waveletDetailWeight", f64::NAN.into())]).contains("invalid waveletDetailWeight")
+    );
+    assert!(msg(&[("waveletDetailWeight", "big".into())]).contains("invalid waveletDetailWeight"));
+    let odd = msg(&[
+        ("energy", "haar".into()),
+        ("neighbourhoodSizes", Array::of1(&12.into()).into()),
+    ]);
+    assert!(odd.contains("invalid neighbourhoodSizes"), "{odd}");
+}

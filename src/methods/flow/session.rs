@@ -128,6 +128,8 @@ impl FlowSession {
                     completeness: 0.0,
                     histogram_matching: options.histogram_matching,
                     match_constrained: true,
+                    energy: crate::methods::optimization::Energy::Pixels,
+                    wavelet_detail_weight: 0.0,
                 };
                 LevelSolver::new(exemplar, setup, &mut rng)
             })

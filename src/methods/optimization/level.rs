@@ -10,12 +10,13 @@ use super::histogram::SortedChannels;
 use super::m_step::Matcher;
 use super::occurrence::{Occurrence, strength};
 use super::schedule::{grid_axis, nearest_corner};
+use super::wavelet_energy::{Energy, WaveletEnergy};
 use crate::core::sample::resize_bilinear;
 use crate::core::{Edge, Image, Result, Rng};
 use crate::methods::optimization::e_step::edge;
 use crate::solvers::nn::patches::gaussian_falloff;
 use crate::solvers::nn::patchmatch::QueryGrid;
-use crate::solvers::nn::{Objective, Pos, Search};
+use crate::solvers::nn::{Neighbourhoods, Objective, Pos, Search};
 
 /// The fixed settings of a level.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -44,6 +45,11 @@ pub struct LevelSetup {
     /// constraint is the texture itself carried along the flow; no for a user's paint, whose
     /// colours need not be the exemplar's.
     pub match_constrained: bool,
+    /// The M-step's distance: pixels, or pixels plus a weighted wavelet term (Shen et al.
+    /// 2009); the wavelet energies take no constraint.
+    pub energy: Energy,
+    /// Weight of the wavelet detail bands (see [`super::wavelet_energy`]).
+    pub wavelet_detail_weight: f32,
 }
 
 /// A grid and its matches, where carried matches come from.
@@ -61,9 +67,20 @@ pub struct LevelSolver {
     cols: Vec<usize>,
     rows: Vec<usize>,
     matches: Vec<Pos>,
-    /// Texture distances ||x_p - z_p||^2 (fall-off weighted) after the last M-step; infinite
-    /// before the first.
+    /// Texture distances after the last M-step (infinite before the first): ||x_p - z_p||^2
+    /// (fall-off weighted), plus the weighted wavelet term with a wavelet energy. The IRLS
+    /// weights and the occurrence penalty's scale come from them.
     distances: Vec<f32>,
+    /// The pixel term alone with a wavelet energy (empty otherwise): the reported energy, so
+    /// that energies compare.
+    pixel_distances: Vec<f32>,
+    /// The wavelet transform of the neighbourhoods with a wavelet energy, its scratch space
+    /// (one gathered neighbourhood, one block side) and unit weights (the pixel term of
+    /// transformed vectors, by Parseval).
+    wavelet: Option<WaveletEnergy>,
+    gathered: Vec<f32>,
+    wavelet_scratch: Vec<f32>,
+    unit_weights: Vec<f32>,
     /// The M-step's own objective per node (equal to `distances` without constraints).
     objective: Vec<f32>,
     falloff: Vec<f32>,
@@ -82,13 +99,28 @@ pub struct LevelSolver {
 impl LevelSolver {
     /// A level over `exemplar` (this level's resolution of it) with a random match per node.
     pub fn new(exemplar: &Image, setup: LevelSetup, rng: &mut Rng) -> Self {
-        let matcher = Matcher::new(
-            feature_map(exemplar, setup.mu, Edge::Clamp),
-            setup.size,
-            setup.search,
-            rng,
-        )
-        .with_passes(setup.passes);
+        let map = feature_map(exemplar, setup.mu, Edge::Clamp);
+        let wavelet = setup.energy.wavelet().map(|w| {
+            WaveletEnergy::new(
+                w,
+                setup.size,
+                map.dims,
+                exemplar.channels(),
+                setup.wavelet_detail_weight,
+            )
+        });
+        let mut wavelet_scratch = vec![0.0; setup.size];
+        // With a wavelet energy every exemplar neighbourhood is transformed once here, and the
+        // searches compare transformed vectors (one code path for all three searches).
+        let space = match &wavelet {
+            None => Neighbourhoods::new(map, setup.size),
+            Some(e) => {
+                Neighbourhoods::transformed(map, setup.size, e.weights().to_vec(), |v, out| {
+                    e.transform(v, out, &mut wavelet_scratch);
+                })
+            }
+        };
+        let matcher = Matcher::over(space, setup.search, rng).with_passes(setup.passes);
         let cols = grid_axis(setup.output_width, setup.size, setup.spacing, setup.wrap);
         let rows = grid_axis(setup.output_height, setup.size, setup.spacing, setup.wrap);
         let (ex_nx, ex_ny) = matcher.space().extent();
@@ -101,6 +133,23 @@ impl LevelSolver {
             falloff: gaussian_falloff(setup.size, 1),
             queries: vec![0.0; nodes * len],
             distances: vec![f32::INFINITY; nodes],
+            pixel_distances: if wavelet.is_some() {
+                vec![f32::INFINITY; nodes]
+            } else {
+                Vec::new()
+            },
+            gathered: if wavelet.is_some() {
+                vec![0.0; len]
+            } else {
+                Vec::new()
+            },
+            unit_weights: if wavelet.is_some() {
+                vec![1.0; len]
+            } else {
+                Vec::new()
+            },
+            wavelet,
+            wavelet_scratch,
             objective: vec![f32::INFINITY; nodes],
             constrained: Vec::new(),
             constrained_weights: Vec::new(),
@@ -151,6 +200,7 @@ impl LevelSolver {
         let carried = self.carried(&old, to_old, scale);
         self.matches = carried;
         self.distances.fill(f32::INFINITY);
+        self.pixel_distances.fill(f32::INFINITY);
     }
 
     /// Moves the matches along a motion: each node takes the match found at `to_old` of its
@@ -165,6 +215,7 @@ impl LevelSolver {
         let carried = self.carried(&old, to_old, (1.0, 1.0));
         self.matches = carried;
         self.distances.fill(f32::INFINITY);
+        self.pixel_distances.fill(f32::INFINITY);
     }
 
     fn carried(
@@ -206,14 +257,14 @@ impl LevelSolver {
         let len = space.vector_len();
         let nx = self.cols.len();
         for (n, query) in self.queries.chunks_exact_mut(len).enumerate() {
-            gather(
-                &map,
-                self.cols[n % nx],
-                self.rows[n / nx],
-                size,
-                wrap,
-                query,
-            );
+            let (x, y) = (self.cols[n % nx], self.rows[n / nx]);
+            match &self.wavelet {
+                None => gather(&map, x, y, size, wrap, query),
+                Some(e) => {
+                    gather(&map, x, y, size, wrap, &mut self.gathered);
+                    e.transform(&self.gathered, query, &mut self.wavelet_scratch);
+                }
+            }
         }
         let grid = QueryGrid {
             cols: &self.cols,
@@ -230,7 +281,11 @@ impl LevelSolver {
             penalty: penalty.as_ref().map(|f| f as &dyn Fn(Pos) -> f32),
         };
         let mut queries = &self.queries;
-        if let Some(constraint) = constraint {
+        debug_assert!(
+            constraint.is_none() || self.wavelet.is_none(),
+            "the session refuses constraints with a wavelet energy"
+        );
+        if let Some(constraint) = constraint.filter(|_| self.wavelet.is_none()) {
             self.constrained.clone_from(&self.queries);
             self.constrained_weights.clear();
             for _ in 0..self.matches.len() {
@@ -283,6 +338,18 @@ impl LevelSolver {
                 );
             }
         }
+        if self.wavelet.is_some() {
+            // Parseval: the unweighted distance of transformed (windowed) vectors is the
+            // fall-off weighted pixel distance.
+            for (n, d) in self.pixel_distances.iter_mut().enumerate() {
+                *d = space.distance_with(
+                    &self.queries[n * len..(n + 1) * len],
+                    &self.unit_weights,
+                    self.matches[n],
+                    f32::INFINITY,
+                );
+            }
+        }
         changed
     }
 
@@ -327,6 +394,11 @@ impl LevelSolver {
         constraint: Option<&Constraint>,
     ) -> usize {
         let r = self.setup.r;
+        // With a wavelet energy the E-step stays this pixel average (the matches, chosen under
+        // eq. 4, carry the wavelet term): the exact minimiser of eq. 4 over x with weighted
+        // coefficients is a linear solve with W^T D W, which is not diagonal (a block-coupled
+        // system per neighbourhood), and with all weights 1 it is the pixel average anyway
+        // (Parseval). The IRLS weights below come from the full eq. 4 distances.
         // IRLS: weights from the last distances (all 1 before the first M-step).
         let weights: Vec<f32> = self
             .distances
@@ -362,17 +434,30 @@ impl LevelSolver {
         iterations
     }
 
-    /// The texture energy sum_p d_p^(r/2), normalised by the number of neighbourhoods and the
-    /// pixels in each (so that levels compare, as in the paper's Fig. 3).
+    /// The texture energy sum_p d_p^(r/2) of the pixel term ||x_p - z_p||^2 (also with a
+    /// wavelet energy, so that the energies compare on one plot), normalised by the number of
+    /// neighbourhoods and the pixels in each (so that levels compare, as in the paper's Fig. 3).
     #[must_use]
     pub fn energy(&self) -> f64 {
+        if self.wavelet.is_some() {
+            self.normalised(&self.pixel_distances)
+        } else {
+            self.normalised(&self.distances)
+        }
+    }
+
+    /// The energy the M-step minimised, normalised like [`LevelSolver::energy`]: with a wavelet
+    /// energy, the pixel term plus the weighted wavelet term (eq. 4); otherwise the same as
+    /// [`LevelSolver::energy`].
+    #[must_use]
+    pub fn match_energy(&self) -> f64 {
+        self.normalised(&self.distances)
+    }
+
+    fn normalised(&self, distances: &[f32]) -> f64 {
         let half_r = f64::from(self.setup.r) / 2.0;
-        let total: f64 = self
-            .distances
-            .iter()
-            .map(|&d| f64::from(d).powf(half_r))
-            .sum();
-        total / (self.distances.len() * self.setup.size * self.setup.size) as f64
+        let total: f64 = distances.iter().map(|&d| f64::from(d).powf(half_r)).sum();
+        total / (distances.len() * self.setup.size * self.setup.size) as f64
     }
 }
 

@@ -25,7 +25,12 @@ impl Matcher {
     /// Builds the search structure (the k-means tree, when that search is chosen).
     #[must_use]
     pub fn new(exemplar: FeatureMap, size: usize, search: Search, rng: &mut Rng) -> Self {
-        let space = Neighbourhoods::new(exemplar, size);
+        Self::over(Neighbourhoods::new(exemplar, size), search, rng)
+    }
+
+    /// Over given neighbourhoods (e.g. stored transformed, for the wavelet energy).
+    #[must_use]
+    pub fn over(space: Neighbourhoods, search: Search, rng: &mut Rng) -> Self {
         let tree = (search == Search::KMeansTree).then(|| KMeansTree::build(&space, rng));
         Matcher {
             space,

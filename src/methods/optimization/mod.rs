@@ -15,10 +15,14 @@ pub mod options;
 pub mod schedule;
 pub mod session;
 pub mod teaching;
+pub mod wavelet_energy;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod wavelet_tests;
 
 pub use constraints::SoftConstraints;
 pub use options::Options;
 pub use session::{Event, EventKind, Session};
+pub use wavelet_energy::Energy;

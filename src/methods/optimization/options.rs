@@ -3,6 +3,8 @@
 use crate::core::{Error, Result, error::check_size};
 use crate::solvers::nn::Search;
 
+pub use super::wavelet_energy::{DEFAULT_DETAIL_WEIGHT, Energy};
+
 /// Everything a texture-optimisation run can be told. Validate with [`Options::validate`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Options {
@@ -40,6 +42,17 @@ pub struct Options {
     /// out contrast, and EM settles on the exemplar's smooth areas (flat fraction up to 0.95
     /// on paving_128, 0.08-0.17 with it). Default: 1.
     pub histogram_matching: f32,
+    /// What the M-step's distance is made of: `pixels` (Kwatra et al. 2005), or the
+    /// wavelet-based energy of Shen et al. 2009 (eq. 4) with `haar` or `daubechies` (D4)
+    /// coefficients of each neighbourhood (see [`super::wavelet_energy`]). The wavelet energies
+    /// need power-of-two neighbourhood sizes of at least 4, and do not take soft constraints.
+    /// Default: pixels.
+    pub energy: Energy,
+    /// Weight w of the wavelet detail bands in eq. 4 (the approximation band has 1). Both
+    /// transforms are orthonormal, so w = 1 is eq. 4 taken literally, which only doubles the
+    /// pixel distance (Parseval) and changes no match; w > 1 stresses multi-scale edges over
+    /// mean colour. Ignored with the pixel energy. Default: [`DEFAULT_DETAIL_WEIGHT`].
+    pub wavelet_detail_weight: f32,
 }
 
 impl Default for Options {
@@ -57,6 +70,8 @@ impl Default for Options {
             tileable: false,
             completeness: DEFAULT_COMPLETENESS,
             histogram_matching: 1.0,
+            energy: Energy::Pixels,
+            wavelet_detail_weight: DEFAULT_DETAIL_WEIGHT,
         }
     }
 }
@@ -134,6 +149,27 @@ impl Options {
         if !self.mu.is_finite() || self.mu < 0.0 || self.mu > 1000.0 {
             return invalid("mu", format!("must be between 0 and 1000, got {}", self.mu));
         }
+        let w = self.wavelet_detail_weight;
+        if !w.is_finite() || !(0.0..=1000.0).contains(&w) {
+            return invalid(
+                "waveletDetailWeight",
+                format!("must be between 0 and 1000, got {w}"),
+            );
+        }
+        if self.energy != Energy::Pixels
+            && let Some(&bad) = self
+                .neighbourhood_sizes
+                .iter()
+                .find(|&&s| s < 4 || !s.is_power_of_two())
+        {
+            return invalid(
+                "neighbourhoodSizes",
+                format!(
+                    "energy '{}' needs powers of two from 4 (the wavelet blocks), got {bad}",
+                    self.energy.name()
+                ),
+            );
+        }
         Ok(())
     }
 }
@@ -195,6 +231,33 @@ mod tests {
                 ..d()
             })
             .contains("invalid mu")
+        );
+        for w in [f32::NAN, -1.0, f32::INFINITY] {
+            assert!(
+                message(Options {
+                    wavelet_detail_weight: w,
+                    ..d()
+                })
+                .contains("invalid waveletDetailWeight"),
+                "{w}"
+            );
+        }
+        let odd = message(Options {
+            energy: Energy::Haar,
+            neighbourhood_sizes: vec![16, 12],
+            ..d()
+        });
+        assert!(
+            odd.contains("neighbourhoodSizes") && odd.contains("haar"),
+            "{odd}"
+        );
+        assert!(
+            Options {
+                energy: Energy::Daubechies,
+                ..d()
+            }
+            .validate(64, 64)
+            .is_ok()
         );
         let small = Options::default().validate(15, 40).unwrap_err().to_string();
         assert!(small.contains("exemplar size 15x40"), "{small}");

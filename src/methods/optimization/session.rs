@@ -6,7 +6,7 @@ use super::e_step::edge;
 use super::initial::random_patches;
 use super::level::{LevelSetup, LevelSolver, fit_output};
 use super::m_step::PATCHMATCH_PASSES;
-use super::options::Options;
+use super::options::{Energy, Options};
 use super::schedule::{Level, plan};
 use crate::core::pyramid::gaussian_pyramid;
 use crate::core::sample::resize_bilinear;
@@ -37,8 +37,12 @@ pub struct Event {
     /// Iteration within the level, 1-based.
     pub iteration: usize,
     /// Texture energy sum_p ||x_p - z_p||^r, normalised by the number of neighbourhoods and the
-    /// pixels in each (so levels compare, as in the paper's Fig. 3).
+    /// pixels in each (so levels compare, as in the paper's Fig. 3). Always the pixel term, with
+    /// a wavelet energy too, so that runs with different energies compare on one plot.
     pub energy: f64,
+    /// The energy the M-step minimised, normalised the same way: with a wavelet energy the pixel
+    /// term plus the weighted wavelet term (eq. 4 of Shen et al. 2009), else equal to `energy`.
+    pub match_energy: f64,
     /// Matches z_p that changed in this iteration's M-step.
     pub changed: usize,
     /// Total EM iterations so far.
@@ -53,6 +57,43 @@ pub struct Event {
 pub struct EnergyPoint {
     pub level: usize,
     pub energy: f64,
+}
+
+/// Most bytes the transformed exemplar neighbourhoods of one level may take with a wavelet
+/// energy (they are stored, one vector per neighbourhood: 116 MB for a 128x128 RGB exemplar at
+/// 32x32, 620 MB at 256x256).
+pub const MAX_WAVELET_BYTES: usize = 512 << 20;
+
+/// Refuses a schedule whose transformed exemplar neighbourhoods would not fit
+/// [`MAX_WAVELET_BYTES`].
+fn check_wavelet_memory(levels: &[Level], options: &Options, channels: usize) -> Result<()> {
+    let dims = if options.mu > 0.0 {
+        3 * channels
+    } else {
+        channels
+    };
+    for lv in levels {
+        let count = (lv.exemplar_width - lv.size + 1) * (lv.exemplar_height - lv.size + 1);
+        let bytes = count * lv.size * lv.size * dims * 4;
+        if bytes > MAX_WAVELET_BYTES {
+            return Err(Error::InvalidParameter {
+                name: "energy",
+                reason: format!(
+                    "energy '{}' stores every exemplar neighbourhood's coefficients: {} MB at \
+                     {}x{} neighbourhoods on a {}x{} exemplar, above the {} MB limit; use a \
+                     smaller exemplar or smaller neighbourhoodSizes",
+                    options.energy.name(),
+                    bytes >> 20,
+                    lv.size,
+                    lv.size,
+                    lv.exemplar_width,
+                    lv.exemplar_height,
+                    MAX_WAVELET_BYTES >> 20
+                ),
+            });
+        }
+    }
+    Ok(())
 }
 
 /// A running texture optimisation.
@@ -85,6 +126,9 @@ impl Session {
     pub fn new(exemplar: &Image, options: Options) -> Result<Session> {
         options.validate(exemplar.width(), exemplar.height())?;
         let levels = plan(exemplar.width(), exemplar.height(), &options)?;
+        if options.energy != Energy::Pixels {
+            check_wavelet_memory(&levels, &options, exemplar.channels())?;
+        }
         let octaves = levels.iter().map(|l| l.octave).max().unwrap_or(0) + 1;
         let exemplars = gaussian_pyramid(exemplar, octaves, Edge::Clamp)?;
         Ok(Session {
@@ -111,6 +155,17 @@ impl Session {
     /// finished session reopens its finest level for another round of iterations, so that
     /// painting on a finished output makes the synthesis follow.
     pub fn set_constraints(&mut self, constraints: Option<SoftConstraints>) -> Result<()> {
+        if constraints.is_some() && self.options.energy != Energy::Pixels {
+            // The constraint weighs output pixels one by one; a wavelet coefficient mixes a
+            // whole block of them, so the weights have no counterpart in the wavelet term.
+            return Err(Error::InvalidParameter {
+                name: "energy",
+                reason: format!(
+                    "soft constraints need energy 'pixels', not '{}'",
+                    self.options.energy.name()
+                ),
+            });
+        }
         if let Some(c) = &constraints {
             let (w, h) = (self.options.output_width, self.options.output_height);
             if (c.target.width(), c.target.height()) != (w, h) {
@@ -243,6 +298,7 @@ impl Session {
             size: lv.size,
             iteration: self.iteration,
             energy,
+            match_energy: self.solver.as_ref().expect("level entered").match_energy(),
             changed,
             total_iterations: self.history.len(),
             solver_iterations: self.solver_iterations,
@@ -276,6 +332,8 @@ impl Session {
             completeness: self.options.completeness,
             histogram_matching: self.options.histogram_matching,
             match_constrained: false,
+            energy: self.options.energy,
+            wavelet_detail_weight: self.options.wavelet_detail_weight,
         };
         let mut solver = LevelSolver::new(&self.exemplars[lv.octave], setup, &mut self.rng);
         let previous = self.level.checked_sub(1).map(|i| self.levels[i]);

@@ -88,11 +88,20 @@ pub fn weighted_ssd(a: &[f32], b: &[f32], g: &[f32]) -> f32 {
 }
 
 /// All `size` x `size` neighbourhoods of an exemplar feature map, addressed by top-left corner.
+///
+/// By default a neighbourhood's vector is read from the feature map where it lies (no copies).
+/// [`Neighbourhoods::transformed`] instead stores every neighbourhood's image under a fixed
+/// linear map (e.g. a wavelet transform), computed once, with per-value weights of its own:
+/// the distance is then the weighted distance between transformed vectors, and every search
+/// runs unchanged on them (the queries must be transformed the same way).
 #[derive(Debug, Clone)]
 pub struct Neighbourhoods {
     exemplar: FeatureMap,
     size: usize,
     weights: Vec<f32>,
+    /// Transformed vectors, `vector_len()` each, in scan order of [`Neighbourhoods::pos_of`];
+    /// empty when vectors are read from the feature map.
+    transformed: Vec<f32>,
 }
 
 impl Neighbourhoods {
@@ -108,6 +117,54 @@ impl Neighbourhoods {
             exemplar,
             size,
             weights,
+            transformed: Vec::new(),
+        }
+    }
+
+    /// The neighbourhoods of `exemplar` stored as `transform(vector)`, compared under
+    /// `weights` (`size * size * dims` long, like the vectors). `transform` maps a gathered
+    /// neighbourhood (first argument) to its transformed vector of the same length (second).
+    /// Memory: `count() * vector_len()` values.
+    #[must_use]
+    pub fn transformed(
+        exemplar: FeatureMap,
+        size: usize,
+        weights: Vec<f32>,
+        mut transform: impl FnMut(&[f32], &mut [f32]),
+    ) -> Self {
+        let mut space = Neighbourhoods::new(exemplar, size);
+        assert_eq!(weights.len(), space.vector_len(), "one weight per value");
+        let len = space.vector_len();
+        let mut vectors = vec![0.0; space.count() * len];
+        let mut gathered = vec![0.0; len];
+        for (i, out) in vectors.chunks_exact_mut(len).enumerate() {
+            space.copy_to(space.pos_of(i), &mut gathered);
+            transform(&gathered, out);
+        }
+        space.weights = weights;
+        space.transformed = vectors;
+        space
+    }
+
+    /// Whether vectors are stored transformed (see [`Neighbourhoods::transformed`]).
+    #[must_use]
+    pub fn is_transformed(&self) -> bool {
+        !self.transformed.is_empty()
+    }
+
+    /// Values `dy * row_len .. (dy + 1) * row_len` of the vector at `pos`, with `row_len =
+    /// size * dims` (a row of pixels, or a slice of the transformed vector).
+    #[inline]
+    fn part(&self, pos: Pos, dy: usize) -> &[f32] {
+        if self.transformed.is_empty() {
+            self.exemplar
+                .row(pos.x as usize, pos.y as usize + dy, self.size)
+        } else {
+            let nx = self.extent().0;
+            let len = self.vector_len();
+            let row_len = self.size * self.exemplar.dims;
+            let start = (pos.y as usize * nx + pos.x as usize) * len + dy * row_len;
+            &self.transformed[start..start + row_len]
         }
     }
 
@@ -187,9 +244,7 @@ impl Neighbourhoods {
         let row_len = self.size * self.exemplar.dims;
         let mut sum = 0.0;
         for dy in 0..self.size {
-            let row = self
-                .exemplar
-                .row(pos.x as usize, pos.y as usize + dy, self.size);
+            let row = self.part(pos, dy);
             let range = dy * row_len..(dy + 1) * row_len;
             sum += weighted_ssd(&query[range.clone()], row, &weights[range]);
             if sum > bound {
@@ -199,13 +254,12 @@ impl Neighbourhoods {
         sum
     }
 
-    /// Copies the neighbourhood at `pos` into `out` (`vector_len()` values).
+    /// Copies the neighbourhood's vector at `pos` (transformed, when stored so) into `out`
+    /// (`vector_len()` values).
     pub fn copy_to(&self, pos: Pos, out: &mut [f32]) {
         let row_len = self.size * self.exemplar.dims;
         for dy in 0..self.size {
-            let row = self
-                .exemplar
-                .row(pos.x as usize, pos.y as usize + dy, self.size);
+            let row = self.part(pos, dy);
             out[dy * row_len..(dy + 1) * row_len].copy_from_slice(row);
         }
     }
@@ -260,5 +314,31 @@ mod tests {
         assert!(n.distance(&q, Pos::new(0, 0), full * 0.1) > full * 0.1);
         assert_eq!(n.clamp(-5, 99), Pos::new(0, 5));
         assert_eq!(n.pos_of(8), Pos::new(1, 1));
+    }
+
+    #[test]
+    fn transformed_neighbourhoods_store_the_map_of_each_vector() {
+        // A reversal with doubled values: distance between transformed vectors under unit
+        // weights is 4x the plain unweighted distance.
+        let map = ramp_map(9, 8, 2);
+        let plain = Neighbourhoods::new(map.clone(), 3);
+        let len = plain.vector_len();
+        let t = Neighbourhoods::transformed(map, 3, vec![1.0; len], |v, out| {
+            for (o, x) in out.iter_mut().zip(v.iter().rev()) {
+                *o = 2.0 * x;
+            }
+        });
+        assert!(t.is_transformed() && !plain.is_transformed());
+        let mut q = vec![0.0; len];
+        let mut tq = vec![0.0; len];
+        plain.copy_to(Pos::new(2, 1), &mut q);
+        t.copy_to(Pos::new(2, 1), &mut tq);
+        let reversed: Vec<f32> = q.iter().rev().map(|x| 2.0 * x).collect();
+        assert_eq!(tq, reversed);
+        for pos in [Pos::new(0, 0), Pos::new(6, 5), Pos::new(3, 2)] {
+            let unweighted = plain.distance_with(&q, &vec![1.0; len], pos, f32::INFINITY);
+            let d = t.distance(&tq, pos, f32::INFINITY);
+            assert!((d - 4.0 * unweighted).abs() < 1e-4, "{d} vs {unweighted}");
+        }
     }
 }
