@@ -57,6 +57,22 @@ test('stage 2: a stroke changes the base along a graph-cut seam, and undo restor
   assert.deepEqual(errors, []);
 });
 
+test('stage 3: pixels, Haar and Daubechies energies run in turn and share one energy plot', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-stage="synthesis"]');
+  await page.fill('#out-width', '64');
+  await page.fill('#out-height', '64');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.check('#dsy-compare');
+  const before = Number(await page.getAttribute('body', 'data-gallery-count'));
+  await page.click('#run');
+  await page.waitForSelector('body[data-synthesis-done="true"]', { timeout: 120_000 });
+  assert.equal(Number(await page.getAttribute('body', 'data-gallery-count')), before + 3, 'three results in the gallery');
+  assert.match(await page.textContent('#dsy-quality'), /flat/);
+  await page.screenshot({ path: `${RESULTS}/design-synthesis.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});
+
 test('stage 4: layer-based design runs row by row to done', async () => {
   const { page, errors } = demo;
   await page.click('button[data-stage="layers"]');
