@@ -8,6 +8,7 @@ pub mod canvas;
 pub mod cost;
 pub mod merge;
 pub mod options;
+pub mod overlap;
 pub mod placement;
 pub mod seam;
 pub mod session;

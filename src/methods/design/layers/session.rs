@@ -5,8 +5,8 @@ use super::qtp::{Query, SearchCount, SearchTexture};
 use crate::core::error::check_size;
 use crate::core::{Error, Image, Result, Rng};
 use crate::methods::design::deform::{Deformation, deform};
-use crate::methods::graphcut::cost::colour_distance;
-use crate::solvers::maxflow::{Graph, HARD_CONSTRAINT};
+use crate::methods::graphcut::overlap::{Overlap, keep_old, pins_from_outside};
+use crate::solvers::maxflow::Graph;
 
 /// How patch positions are searched.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -346,72 +346,42 @@ impl LayerDesign {
     /// pixels along the minimum-cut seam through the made ones.
     fn stitch(&mut self, layer: usize, px: usize, py: usize, sx: usize, sy: usize) -> Result<()> {
         let p = self.options.patch_size;
-        let w = self.options.output_width;
-        let h = self.options.output_height;
+        let (w, h) = (self.options.output_width, self.options.output_height);
         let tex = &self.textures[layer];
-        let at = |x: usize, y: usize| (py + y) * w + px + x;
-        // Nodes: the made pixels of the window. Source = keep the old pixel, sink = new.
-        let mut node = vec![usize::MAX; p * p];
-        let mut n = 0;
-        for i in 0..p * p {
-            if self.filled[at(i % p, i / p)] {
-                node[i] = n;
-                n += 1;
-            }
-        }
-        let mut keep_old = vec![false; p * p];
-        if n > 0 {
-            self.graph.reset(n)?;
-            for i in 0..p * p {
-                let Some(a) = Some(node[i]).filter(|&a| a != usize::MAX) else {
-                    continue;
-                };
-                let (x, y) = (i % p, i / p);
-                // Next to a pixel not made yet (which the patch will fill): must be new.
-                let new_next = [
-                    (x > 0, i.wrapping_sub(1)),
-                    (x + 1 < p, i + 1),
-                    (y > 0, i.wrapping_sub(p)),
-                    (y + 1 < p, i + p),
-                ]
-                .iter()
-                .any(|&(ok, j)| ok && node[j] == usize::MAX);
-                // On the window's border with made pixels beyond it: must stay old.
-                let gx = px + x;
-                let gy = py + y;
-                let old_next = (x == 0 && gx > 0 && self.filled[at(x, y) - 1])
-                    || (x + 1 == p && gx + 1 < w && self.filled[at(x, y) + 1])
-                    || (y == 0 && gy > 0 && self.filled[at(x, y) - w])
-                    || (y + 1 == p && gy + 1 < h && self.filled[at(x, y) + w]);
-                if new_next {
-                    self.graph.add_terminal(a, 0.0, HARD_CONSTRAINT)?;
-                } else if old_next {
-                    self.graph.add_terminal(a, HARD_CONSTRAINT, 0.0)?;
-                }
-                let old = |i: usize| self.output.pixel(px + i % p, py + i / p);
-                let new = |i: usize| tex.pixel(sx + i % p, sy + i / p);
-                for (ok, j) in [(x + 1 < p, i + 1), (y + 1 < p, i + p)] {
-                    if ok && node[j] != usize::MAX {
-                        let cost =
-                            colour_distance(old(i), new(i)) + colour_distance(old(j), new(j));
-                        self.graph.add_edge(a, node[j], cost, cost)?;
-                    }
-                }
-            }
-            self.graph.maxflow();
-            for i in 0..p * p {
-                if node[i] != usize::MAX {
-                    keep_old[i] = self.graph.is_source_side(node[i]);
-                }
-            }
-        }
-        for i in 0..p * p {
-            if !keep_old[i] {
-                let (x, y) = (i % p, i / p);
-                let src = tex.pixel(sx + x, sy + y).to_vec();
-                self.output.pixel_mut(px + x, py + y).copy_from_slice(&src);
-                self.filled[at(x, y)] = true;
-            }
+        let c = tex.channels();
+        let window = |img: &Image, x0: usize, y0: usize| -> Vec<f32> {
+            (0..p)
+                .flat_map(|y| {
+                    img.data()
+                        [((y0 + y) * img.width() + x0) * c..((y0 + y) * img.width() + x0 + p) * c]
+                        .iter()
+                        .copied()
+                })
+                .collect()
+        };
+        let (old, new) = (window(&self.output, px, py), window(tex, sx, sy));
+        let made: Vec<bool> = (0..p * p)
+            .map(|i| self.filled[(py + i / p) * w + px + i % p])
+            .collect();
+        let pinned = pins_from_outside(&self.filled, w, h, px, py, p, p);
+        let keep = keep_old(
+            &mut self.graph,
+            &Overlap {
+                width: p,
+                height: p,
+                channels: c,
+                old: &old,
+                new: &new,
+                made: &made,
+                pinned_old: &pinned,
+            },
+        )?;
+        for (i, _) in keep.iter().enumerate().filter(|(_, k)| !**k) {
+            let (x, y) = (i % p, i / p);
+            self.output
+                .pixel_mut(px + x, py + y)
+                .copy_from_slice(&new[i * c..(i + 1) * c]);
+            self.filled[(py + y) * w + px + x] = true;
         }
         Ok(())
     }
