@@ -194,7 +194,7 @@ impl LocalDeformation {
                 (y as isize + wy0 as isize - stroke.dy) as usize,
             )
         };
-        let source = window(reference, ww, wh, |x, y| to_reference(x, y));
+        let source = window(reference, ww, wh, to_reference);
         let base = window(&base_image, ww, wh, |x, y| (x + wx0, y + wy0));
         // A window side that lies inside the base is enclosed by base texture; a side on the
         // base's own edge is not (nothing lies beyond it to meet).

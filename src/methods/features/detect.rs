@@ -116,9 +116,19 @@ fn grey(image: &Image) -> Vec<f32> {
 fn responses(image: &Image, kind: FeatureKind) -> (Vec<f32>, Vec<f32>) {
     let (w, h) = (image.width(), image.height());
     let g = bilateral(&grey(image), w, h, 2.0, 10.0 / 256.0);
-    let at = |x: isize, y: isize| {
-        g[(y.clamp(0, h as isize - 1) as usize) * w + x.clamp(0, w as isize - 1) as usize]
+    // Mirrored borders: a clamped border would read a ramp's last step as a ridge.
+    let reflect = |i: isize, n: usize| {
+        let n = n as isize;
+        let r = if i < 0 {
+            -i
+        } else if i >= n {
+            2 * n - 2 - i
+        } else {
+            i
+        };
+        r.clamp(0, n - 1) as usize
     };
+    let at = |x: isize, y: isize| g[reflect(y, h) * w + reflect(x, w)];
     let mut gx = vec![0.0f32; w * h];
     let mut gy = vec![0.0f32; w * h];
     let mut response = vec![0.0f32; w * h];

@@ -3,8 +3,15 @@
 //! bend the chosen patch so its features meet the placed ones (`alignment`), and grow the texture
 //! and its feature map together (`session`).
 
+pub mod alignment;
 pub mod bilateral;
 pub mod detect;
+pub mod matching;
 pub mod thinning;
 
 pub use detect::{DetectOptions, FeatureKind, FeatureMap, detect};
+pub mod broken;
+mod session;
+
+pub use alignment::WarpKind;
+pub use session::{FeatureEvent, FeatureOptions, FeatureSynthesis, Placement};

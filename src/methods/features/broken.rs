@@ -1,0 +1,54 @@
+//! The broken-feature count: curve ends per 1000 curve pixels in the feature map detected on an
+//! output, minus the same figure for the exemplar's own map. A curve cut by a patch seam ends
+//! where it should go on, so broken features raise it; the exemplar's own ends (a crop's border,
+//! real line ends) are taken off. Lower is better; 0 means no more ends than the exemplar has.
+//! Both maps are detected the same way, with the exemplar's absolute threshold, so the figure
+//! judges the pictures, whichever method made them.
+
+use super::detect::{DetectOptions, detect, detect_with_threshold};
+use super::thinning::endpoints;
+use crate::core::{Image, Result};
+
+/// Curve ends per 1000 curve pixels (0 for a map without curves).
+#[must_use]
+pub fn ends_per_thousand(mask: &[bool], width: usize, height: usize) -> f64 {
+    let pixels = mask.iter().filter(|&&m| m).count();
+    if pixels == 0 {
+        return 0.0;
+    }
+    1000.0 * endpoints(mask, width, height) as f64 / pixels as f64
+}
+
+/// The broken-feature count of `output` against `exemplar`.
+pub fn broken_features(exemplar: &Image, output: &Image, options: DetectOptions) -> Result<f64> {
+    let own = detect(exemplar, options)?;
+    let theirs = detect_with_threshold(output, options.kind, own.threshold, options.alpha);
+    Ok(
+        ends_per_thousand(&theirs.mask, output.width(), output.height())
+            - ends_per_thousand(&own.mask, exemplar.width(), exemplar.height()),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn broken_lines_count_more_ends_than_whole_ones() {
+        let grid = |broken: bool| {
+            Image::from_fn(64, 64, 1, move |x, y, _| {
+                let line = (y % 16 == 8 && !(broken && (2..8).contains(&(x % 16)))) || x % 16 == 12;
+                if line { 0.2 } else { 0.8 }
+            })
+            .unwrap()
+        };
+        let exemplar = grid(false);
+        let whole = broken_features(&exemplar, &grid(false), DetectOptions::default()).unwrap();
+        let broken = broken_features(&exemplar, &grid(true), DetectOptions::default()).unwrap();
+        assert!(whole.abs() < 1e-9, "the exemplar against itself: {whole}");
+        assert!(
+            broken > 20.0,
+            "every horizontal line cut four times by 6-pixel gaps: {broken}"
+        );
+    }
+}
