@@ -20,3 +20,6 @@ mod flow_cases;
 
 #[path = "common/design_cases.rs"]
 mod design_cases;
+
+#[path = "common/features_cases.rs"]
+mod features_cases;

@@ -4,6 +4,7 @@
 mod design;
 mod error;
 mod exemplar;
+mod features;
 mod flow;
 mod graphcut;
 mod merge;
@@ -16,6 +17,7 @@ pub use design::{
     LayerDesign, TextureBrush, TileableSession, deform_texture, deformation_set, make_tileable,
 };
 pub use exemplar::Exemplar;
+pub use features::{FeatureMap, FeatureSynthesis, detect_features, measure_broken_features};
 pub use flow::{FlowAnimation, flow_field};
 pub use graphcut::GraphcutTextures;
 pub use merge::GraphcutMerge;

@@ -281,6 +281,12 @@ impl FeatureSynthesis {
         &self.feature
     }
 
+    /// The tangent angle at every output pixel (meaningful where the feature mask is set).
+    #[must_use]
+    pub fn feature_angles(&self) -> &[f32] {
+        &self.angle
+    }
+
     /// The exemplar's feature map (as detected or given).
     #[must_use]
     pub fn exemplar_map(&self) -> &FeatureMap {

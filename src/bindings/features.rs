@@ -1,0 +1,338 @@
+//! Feature-guided synthesis (Wu & Yu 2004) for JS: `detectFeatures` gives an editable
+//! `FeatureMap`, `FeatureSynthesis` places one patch per step and shows its feature map, context,
+//! correspondences and warp, and `measureBrokenFeatures` scores any output.
+
+use js_sys::{Array, Float32Array, Uint8ClampedArray};
+use wasm_bindgen::prelude::*;
+
+use super::error::JsResult;
+use super::exemplar::Exemplar;
+use super::options::{OptionsReader, object};
+use super::pixels::{render_into, write_rgba};
+use crate::core::{Error, from_rgba8};
+use crate::methods::design::Deformation;
+use crate::methods::features::broken::broken_features;
+use crate::methods::features::{
+    DetectOptions, FeatureKind, FeatureMap as Map, FeatureOptions, FeatureSynthesis as Synthesis,
+    WarpKind, detect,
+};
+
+fn invalid(name: &'static str, reason: impl Into<String>) -> JsError {
+    Error::InvalidParameter {
+        name,
+        reason: reason.into(),
+    }
+    .into()
+}
+
+fn read_detect(js: &OptionsReader) -> JsResult<DetectOptions> {
+    let d = DetectOptions::default();
+    let options = DetectOptions {
+        kind: match js.string("features")?.as_deref() {
+            None => d.kind,
+            Some("edges") => FeatureKind::Edges,
+            Some("ridges") => FeatureKind::Ridges,
+            Some("both") => FeatureKind::Both,
+            Some(other) => {
+                return Err(invalid(
+                    "features",
+                    format!("must be 'edges', 'ridges' or 'both', got '{other}'"),
+                ));
+            }
+        },
+        percentile: js.number("threshold")?.map_or(d.percentile, |v| v as f32),
+        alpha: js.number("alpha")?.map_or(d.alpha, |v| v as f32),
+    };
+    options.validate()?;
+    Ok(options)
+}
+
+/// An exemplar's feature map: curves one pixel wide with their tangents. Paint and erase to
+/// correct it, then hand it to `FeatureSynthesis.withFeatureMap`.
+#[wasm_bindgen]
+pub struct FeatureMap {
+    map: Map,
+}
+
+/// Detects the feature map of an exemplar: `detectFeatures(exemplar, { features: 'ridges' |
+/// 'edges' | 'both', threshold: 0.9, alpha: 0.3 })` (threshold: the percentile of responses above
+/// which a pixel is a strong feature).
+#[wasm_bindgen(js_name = detectFeatures)]
+pub fn detect_features(exemplar: &Exemplar, options: JsValue) -> JsResult<FeatureMap> {
+    let js = OptionsReader::new(&options, &["features", "threshold", "alpha"])?;
+    Ok(FeatureMap {
+        map: detect(exemplar.image(), read_detect(&js)?)?,
+    })
+}
+
+#[wasm_bindgen]
+impl FeatureMap {
+    #[wasm_bindgen(getter)]
+    pub fn width(&self) -> u32 {
+        self.map.width as u32
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn height(&self) -> u32 {
+        self.map.height as u32
+    }
+
+    /// Feature pixels.
+    #[wasm_bindgen(getter)]
+    pub fn count(&self) -> u32 {
+        self.map.count() as u32
+    }
+
+    /// Paints (`on` true) or erases a disc of `radius` pixels at (x, y).
+    pub fn paint(&mut self, x: f32, y: f32, radius: f32, on: bool) -> JsResult<()> {
+        for (name, v) in [("x", x), ("y", y), ("radius", radius)] {
+            if !v.is_finite() {
+                return Err(invalid(name, format!("must be a finite number, got {v}")));
+            }
+        }
+        if !(0.0..=64.0).contains(&radius) {
+            return Err(invalid(
+                "radius",
+                format!("must be between 0 and 64, got {radius}"),
+            ));
+        }
+        self.map.paint(x, y, radius, on);
+        Ok(())
+    }
+
+    /// The curves as RGBA: coloured by orientation bucket, transparent elsewhere.
+    #[wasm_bindgen(js_name = renderInto)]
+    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        write_rgba(&feature_rgba(&self.map.mask, &self.map.angle), target)
+    }
+}
+
+/// The four bucket colours of the feature views.
+const BUCKET_COLOURS: [[u8; 4]; 4] = [
+    [255, 90, 80, 255],
+    [250, 210, 70, 255],
+    [90, 200, 255, 255],
+    [170, 120, 255, 255],
+];
+
+fn feature_rgba(mask: &[bool], angle: &[f32]) -> Vec<u8> {
+    mask.iter()
+        .zip(angle)
+        .flat_map(|(&m, &a)| {
+            if m {
+                BUCKET_COLOURS[crate::methods::features::detect::bucket(a)]
+            } else {
+                [0, 0, 0, 0]
+            }
+        })
+        .collect()
+}
+
+const KNOWN: &[&str] = &[
+    "outputWidth",
+    "outputHeight",
+    "patchSize",
+    "overlap",
+    "featureWeight",
+    "warp",
+    "tolerance",
+    "featureCandidates",
+    "extraInputs",
+    "features",
+    "threshold",
+    "alpha",
+    "seed",
+];
+
+fn read_options(value: &JsValue) -> JsResult<FeatureOptions> {
+    let js = OptionsReader::new(value, KNOWN)?;
+    let d = FeatureOptions::default();
+    let mut extra = Vec::new();
+    if let Some(v) = js.value("extraInputs") {
+        if !Array::is_array(&v) {
+            return Err(invalid(
+                "extraInputs",
+                "must be an array such as ['rotate90', 'mirror']",
+            ));
+        }
+        for item in Array::from(&v).iter() {
+            extra.push(match item.as_string().as_deref() {
+                Some("rotate90") => Deformation::Rotate { degrees: 90.0 },
+                Some("rotate180") => Deformation::Rotate { degrees: 180.0 },
+                Some("rotate270") => Deformation::Rotate { degrees: 270.0 },
+                Some("mirror") => Deformation::Mirror,
+                Some("flip") => Deformation::Flip,
+                _ => {
+                    return Err(invalid(
+                        "extraInputs",
+                        format!("entries are 'rotate90', 'rotate180', 'rotate270', 'mirror' or 'flip', got {item:?}"),
+                    ));
+                }
+            });
+        }
+    }
+    Ok(FeatureOptions {
+        output_width: js
+            .integer("outputWidth", 1, 8192)?
+            .map_or(d.output_width, |v| v as usize),
+        output_height: js
+            .integer("outputHeight", 1, 8192)?
+            .map_or(d.output_height, |v| v as usize),
+        patch_size: js
+            .integer("patchSize", 1, 4096)?
+            .map_or(d.patch_size, |v| v as usize),
+        overlap: js.integer("overlap", 1, 4096)?.map(|v| v as usize),
+        feature_weight: js
+            .number("featureWeight")?
+            .map_or(d.feature_weight, |v| v as f32),
+        warp: js.boolean("warp")?.unwrap_or(d.warp),
+        tolerance: js.number("tolerance")?.map_or(d.tolerance, |v| v as f32),
+        feature_candidates: js
+            .integer("featureCandidates", 1, 100_000)?
+            .map_or(d.feature_candidates, |v| v as usize),
+        extra_inputs: extra,
+        detect: read_detect(&js)?,
+        seed: js
+            .integer("seed", 0, u64::from(u32::MAX))?
+            .unwrap_or(d.seed),
+    })
+}
+
+/// Feature-guided synthesis, one patch per step: `new FeatureSynthesis(exemplar, { outputWidth:
+/// 256, outputHeight: 256, patchSize: 64, featureWeight: 0.5, warp: true, tolerance: 0.1,
+/// featureCandidates: 256, extraInputs: [], features: 'ridges', threshold: 0.9, alpha: 0.3,
+/// seed: 1 })`.
+#[wasm_bindgen]
+pub struct FeatureSynthesis {
+    synthesis: Synthesis,
+}
+
+#[wasm_bindgen]
+impl FeatureSynthesis {
+    #[wasm_bindgen(constructor)]
+    pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<FeatureSynthesis> {
+        Ok(FeatureSynthesis {
+            synthesis: Synthesis::new(exemplar.image(), None, read_options(&options)?)?,
+        })
+    }
+
+    /// Like the constructor, with a feature map the caller detected (and perhaps edited).
+    #[wasm_bindgen(js_name = withFeatureMap)]
+    pub fn with_feature_map(
+        exemplar: &Exemplar,
+        map: &FeatureMap,
+        options: JsValue,
+    ) -> JsResult<FeatureSynthesis> {
+        Ok(FeatureSynthesis {
+            synthesis: Synthesis::new(
+                exemplar.image(),
+                Some(map.map.clone()),
+                read_options(&options)?,
+            )?,
+        })
+    }
+
+    /// Places the next patch: `{ kind: 'patch' | 'done', done, patch, patches, x, y, input,
+    /// sourceX, sourceY, featureCost, colourCost, contextFeatures, correspondences, warp: 'none' |
+    /// 'spline' | 'shepard' | 'skipped', colourOnly }`.
+    pub fn step(&mut self) -> JsResult<JsValue> {
+        let e = self.synthesis.step()?;
+        let warp = match e.warp {
+            WarpKind::None => "none",
+            WarpKind::Spline => "spline",
+            WarpKind::Shepard(_) => "shepard",
+            WarpKind::Skipped => "skipped",
+        };
+        Ok(object(&[
+            ("kind", if e.done { "done" } else { "patch" }.into()),
+            ("done", e.done.into()),
+            ("patch", (e.patch as u32).into()),
+            ("patches", (e.patches as u32).into()),
+            ("x", (e.x as u32).into()),
+            ("y", (e.y as u32).into()),
+            ("input", (e.input as u32).into()),
+            ("sourceX", (e.source_x as u32).into()),
+            ("sourceY", (e.source_y as u32).into()),
+            ("featureCost", e.feature_cost.into()),
+            ("colourCost", e.colour_cost.into()),
+            ("contextFeatures", (e.context_features as u32).into()),
+            ("correspondences", (e.correspondences as u32).into()),
+            ("warp", warp.into()),
+            ("colourOnly", e.colour_only.into()),
+        ]))
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn done(&self) -> bool {
+        self.synthesis.is_done()
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn width(&self) -> u32 {
+        self.synthesis.options().output_width as u32
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn height(&self) -> u32 {
+        self.synthesis.options().output_height as u32
+    }
+
+    #[wasm_bindgen(js_name = renderInto)]
+    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        render_into(self.synthesis.image(), target)
+    }
+
+    /// The synthesised feature map, coloured by orientation (output size).
+    #[wasm_bindgen(js_name = renderFeatures)]
+    pub fn render_features(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        write_rgba(
+            &feature_rgba(
+                self.synthesis.feature_mask(),
+                self.synthesis.feature_angles(),
+            ),
+            target,
+        )
+    }
+
+    /// The last placement: `{ x, y, size, top, left, pairs, grid }`: the patch's place, its
+    /// context region (rows at the top, columns at the left), the correspondences as a flat
+    /// Float32Array (context x, y, then where its partner lay in the patch, x, y, in output
+    /// coordinates), and the warp's displacements every 4 pixels (dx, dy pairs).
+    pub fn placement(&self) -> JsValue {
+        let p = self.synthesis.placement();
+        let pairs: Vec<f32> = p
+            .pairs
+            .iter()
+            .flat_map(|&((a, b), (c, d))| [a, b, c, d])
+            .collect();
+        let grid: Vec<f32> = p.grid.iter().flat_map(|&(a, b)| [a, b]).collect();
+        object(&[
+            ("x", (p.x as u32).into()),
+            ("y", (p.y as u32).into()),
+            ("size", (p.size as u32).into()),
+            ("top", p.region.map_or(0, |r| r.top as u32).into()),
+            ("left", p.region.map_or(0, |r| r.left as u32).into()),
+            ("pairs", Float32Array::from(pairs.as_slice()).into()),
+            ("grid", Float32Array::from(grid.as_slice()).into()),
+        ])
+    }
+}
+
+/// The broken-feature count of an RGBA output against an exemplar: curve ends per 1000 curve
+/// pixels in the output's detected feature map minus the exemplar's (lower is better).
+#[wasm_bindgen(js_name = measureBrokenFeatures)]
+pub fn measure_broken_features(
+    exemplar: &Exemplar,
+    rgba: &[u8],
+    width: u32,
+    height: u32,
+    options: JsValue,
+) -> JsResult<f64> {
+    let js = OptionsReader::new(&options, &["features", "threshold", "alpha"])?;
+    let output = from_rgba8(width as usize, height as usize, rgba)?;
+    Ok(broken_features(
+        exemplar.image(),
+        &output,
+        read_detect(&js)?,
+    )?)
+}

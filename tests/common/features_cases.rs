@@ -1,0 +1,66 @@
+//! The JS-facing feature-guided synthesis (Wu & Yu 2004), as JavaScript calls it (Node and
+//! Chromium): detection and editing of a feature map, the session, the teaching data, the
+//! broken-feature measure, and bad input.
+
+use js_sys::{Array, Uint8ClampedArray};
+use texsynth::bindings::{Exemplar, FeatureSynthesis, detect_features, measure_broken_features};
+use wasm_bindgen::JsValue;
+use wasm_bindgen_test::wasm_bindgen_test;
+
+use super::js_helpers::{error_message, get, options};
+
+const TILES_64: &[u8] = include_bytes!("../../www/samples/tiles_64.png");
+
+#[wasm_bindgen_test]
+fn a_feature_map_is_detected_edited_and_used() {
+    let ex = Exemplar::from_bytes(TILES_64).unwrap();
+    let mut map = detect_features(&ex, JsValue::UNDEFINED).unwrap();
+    let before = map.count();
+    assert!(before > 100, "{before}");
+    map.paint(10.0, 10.0, 3.0, false).unwrap();
+    assert!(map.count() <= before);
+    map.paint(40.0, 40.0, 1.0, true).unwrap();
+    let rgba = Uint8ClampedArray::new_with_length(64 * 64 * 4);
+    map.render_into(&rgba).unwrap();
+    assert!(rgba.to_vec().chunks(4).any(|p| p[3] == 255));
+    let mut s = FeatureSynthesis::with_feature_map(
+        &ex,
+        &map,
+        options(&[("outputWidth", 96.into()), ("outputHeight", 96.into()), ("patchSize", 32.into())]),
+    )
+    .unwrap();
+    let mut steps = 0;
+    let mut warped = 0;
+    while !s.done() {
+        let e = s.step().unwrap();
+        steps += 1;
+        if get(&e, "warp").as_string().unwrap() != "none" {
+            warped += 1;
+        }
+        assert!(steps < 100);
+    }
+    assert!(warped > 0, "some patch was bent onto the context");
+    let p = s.placement();
+    assert_eq!(get(&p, "size").as_f64().unwrap(), 32.0);
+    let out = Uint8ClampedArray::new_with_length(96 * 96 * 4);
+    s.render_into(&out).unwrap();
+    s.render_features(&out).unwrap();
+    s.render_into(&out).unwrap();
+    let broken = measure_broken_features(&ex, &out.to_vec(), 96, 96, JsValue::UNDEFINED).unwrap();
+    assert!(broken.is_finite());
+}
+
+#[wasm_bindgen_test]
+fn bad_feature_input_is_named() {
+    let ex = Exemplar::from_bytes(TILES_64).unwrap();
+    let msg = |v: JsValue| error_message(FeatureSynthesis::new(&ex, v));
+    assert!(msg(options(&[("patchSize", 100.into())])).contains("patchSize"));
+    assert!(msg(options(&[("features", "corners".into())])).contains("'edges', 'ridges' or 'both'"));
+    assert!(msg(options(&[("threshold", 2.into())])).contains("threshold"));
+    assert!(msg(options(&[("featureWeight", f64::NAN.into())])).contains("featureWeight"));
+    assert!(msg(options(&[("extraInputs", Array::of1(&"spin".into()).into())])).contains("extraInputs"));
+    assert!(msg(options(&[("warpp", true.into())])).contains("unknown option 'warpp'"));
+    let mut map = detect_features(&ex, JsValue::UNDEFINED).unwrap();
+    assert!(error_message(map.paint(f32::NAN, 1.0, 2.0, true)).contains("invalid x"));
+    assert!(error_message(measure_broken_features(&ex, &[0; 12], 4, 4, JsValue::UNDEFINED)).contains("length"));
+}
