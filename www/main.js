@@ -6,12 +6,13 @@ import { drawInto } from './lib/canvas.js';
 import { setupInput } from './lib/input.js';
 import { Runner } from './lib/runner.js';
 import * as design from './panels/design.js';
+import * as features from './panels/features.js';
 import * as flow from './panels/flow.js';
 import * as graphcut from './panels/graphcut.js';
 import * as merge from './panels/merge.js';
 import * as optimization from './panels/optimization.js';
 
-const PANELS = [optimization, graphcut, merge, flow, design];
+const PANELS = [optimization, graphcut, merge, flow, design, features];
 const $ = (id) => document.getElementById(id);
 
 function showError(message) {

@@ -1,0 +1,51 @@
+// The "Feature-guided" panel in headless Chromium: the exemplar's feature map is drawn and can be
+// edited, the synthesis places patches with the teaching overlay, and the plain graph cut runs
+// beside it with both broken-feature counts shown.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { canvasPixels, openDemo, RESULTS } from './harness.mjs';
+
+let demo;
+before(async () => {
+  demo = await openDemo();
+});
+after(async () => demo?.close());
+
+test('feature-guided synthesis runs beside plain graph cut with both broken-feature counts', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-panel="features"]');
+  await page.click('button[data-sample="tiles_64"]');
+  await page.waitForSelector('body[data-exemplar="tiles 64×64"]');
+  await page.fill('#out-width', '128');
+  await page.fill('#out-height', '128');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.fill('#fg-patch', '32');
+  await page.dispatchEvent('#fg-patch', 'change');
+  const caption = await page.textContent('#fg-exemplar-caption');
+  const count = Number(/(\d+) pixels/.exec(caption)[1]);
+  assert.ok(count > 100, caption);
+  // Erase part of the exemplar's map: fewer feature pixels.
+  await page.check('input[name="fg-brush"][value="erase"]');
+  const box = await page.locator('#fg-exemplar').boundingBox();
+  await page.mouse.move(box.x + box.width * 0.3, box.y + box.height * 0.3);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width * 0.6, box.y + box.height * 0.35, { steps: 6 });
+  await page.mouse.up();
+  const after = Number(/(\d+) pixels/.exec(await page.textContent('#fg-exemplar-caption'))[1]);
+  assert.ok(after < count, `erasing removed features: ${count} -> ${after}`);
+  await page.check('input[name="fg-brush"][value="off"]');
+  await page.click('#step');
+  await page.waitForSelector('body[data-feature-patches="1"]');
+  await page.click('#step');
+  await page.waitForSelector('body[data-feature-patches="2"]');
+  assert.match(await page.textContent('#fg-readout'), /patch 2\/\d+ .* context features .* warp: /);
+  await page.click('#run');
+  await page.waitForSelector('body[data-features-done="true"]', { timeout: 120_000 });
+  const ours = Number(await page.getAttribute('#fg-quality', 'data-broken'));
+  const theirs = Number(await page.getAttribute('#fg-graphcut-caption', 'data-broken'));
+  assert.ok(Number.isFinite(ours) && Number.isFinite(theirs), `${ours} ${theirs}`);
+  const pixels = await canvasPixels(page, 'fg-map');
+  assert.ok(pixels.some((v, i) => i % 4 === 3 && v === 255), 'the synthesised feature map is drawn');
+  await page.screenshot({ path: `${RESULTS}/features.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});

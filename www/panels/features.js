@@ -1,0 +1,231 @@
+// The "Feature-guided" panel (Wu & Yu 2004): the exemplar's feature map (threshold, paint and
+// erase), the synthesis placing patches live with its own feature map beside it, the current
+// patch's context region, correspondences and warp grid, and plain graph-cut textures run on the
+// same exemplar and seed for comparison, with the broken-feature count of each.
+import { FeatureSynthesis, GraphcutTextures, detectFeatures, measureBrokenFeatures } from '../pkg/texsynth.js';
+import { drawInto, drawOverlay } from '../lib/canvas.js';
+import { showQuality } from '../lib/quality.js';
+
+export const id = 'features';
+export const title = 'Feature-guided';
+
+const OPTIONS_HTML = `
+  <label title="which curves make the feature map">features <select id="fg-kind" class="view">
+    <option value="ridges">ridges (thin lines)</option><option value="edges">edges</option><option value="both">both</option></select></label>
+  <label title="percentile of the responses above which a pixel is a strong feature">threshold
+    <input id="fg-threshold" class="view" type="range" min="0.75" max="0.98" step="0.01" value="0.9"> <span id="fg-threshold-value">0.90</span></label>
+  <label title="patch side (the paper: 32 to 64)">patch <input id="fg-patch" type="number" value="64" min="16" max="128"></label>
+  <label title="bend each patch so its features meet the placed ones (section 2.2)"><input id="fg-warp" type="checkbox" checked> warp</label>
+  <label><input id="fg-compare" type="checkbox" checked> compare with graph cut</label>
+  <span class="views">exemplar map:
+    <label><input type="radio" name="fg-brush" class="view" value="off" checked> view</label>
+    <label><input type="radio" name="fg-brush" class="view" value="paint"> paint</label>
+    <label><input type="radio" name="fg-brush" class="view" value="erase"> erase</label></span>`;
+
+const SIDE_HTML = `
+  <div class="readout" id="fg-readout">press Run or Step</div>
+  <div class="side-row">
+    <figure><canvas id="fg-exemplar" class="paintable" aria-label="Exemplar feature map"></canvas><figcaption id="fg-exemplar-caption">exemplar features</figcaption></figure>
+    <figure><canvas id="fg-map" aria-label="Synthesised feature map"></canvas><figcaption>synthesised feature map</figcaption></figure>
+  </div>
+  <figure><canvas id="fg-graphcut" aria-label="Plain graph cut, same seed"></canvas><figcaption id="fg-graphcut-caption">plain graph cut, same exemplar and seed</figcaption></figure>
+  <p class="quality" id="fg-quality"></p>
+  <p class="legend">On the output: the patch (white), its context region (yellow), each correspondence as a line
+  from where the partner feature lay to where the warp moved it (cyan), and the warp as a deformed grid.
+  Feature colours give the orientation bucket.</p>`;
+
+export function createPanel(ui) {
+  let map = null;
+  let mapOf = null;
+  let synthesis = null;
+  let graphcut = null;
+  let painting = false;
+
+  const detectOptions = () => ({ features: ui.$('fg-kind').value, threshold: Number(ui.$('fg-threshold').value) });
+
+  function detect() {
+    map?.free();
+    map = detectFeatures(ui.exemplar(), detectOptions());
+    mapOf = ui.exemplar();
+    drawExemplarMap();
+  }
+
+  function drawExemplarMap() {
+    const canvas = ui.$('fg-exemplar');
+    drawInto(canvas, ui.exemplar());
+    const ctx = canvas.getContext('2d');
+    ctx.fillStyle = 'rgba(0,0,0,0.45)';
+    ctx.fillRect(0, 0, canvas.width, canvas.height);
+    drawOverlay(canvas, map.width, map.height, (b) => map.renderInto(b));
+    ui.$('fg-exemplar-caption').textContent = `exemplar features: ${map.count} pixels`;
+  }
+
+  function paintAt(event) {
+    const mode = document.querySelector('input[name="fg-brush"]:checked').value;
+    if (mode === 'off' || !map) return;
+    const box = ui.$('fg-exemplar').getBoundingClientRect();
+    const x = ((event.clientX - box.left) / box.width) * map.width;
+    const y = ((event.clientY - box.top) / box.height) * map.height;
+    map.paint(x, y, mode === 'paint' ? 0.6 : 2.5, mode === 'paint');
+    drawExemplarMap();
+    resetSessions();
+  }
+
+  function options() {
+    return {
+      outputWidth: ui.outputWidth(),
+      outputHeight: ui.outputHeight(),
+      seed: ui.seed(),
+      patchSize: Number(ui.$('fg-patch').value),
+      warp: ui.$('fg-warp').checked,
+      ...detectOptions(),
+    };
+  }
+
+  function drawPlacement() {
+    const p = synthesis.placement();
+    const canvas = ui.outputCanvas;
+    const ctx = canvas.getContext('2d');
+    const s = canvas.width / synthesis.width;
+    ctx.save();
+    ctx.lineWidth = 1;
+    ctx.strokeStyle = 'rgba(255,255,255,0.9)';
+    ctx.strokeRect(p.x * s + 0.5, p.y * s + 0.5, p.size * s - 1, p.size * s - 1);
+    ctx.fillStyle = 'rgba(255,220,60,0.18)';
+    if (p.top) ctx.fillRect(p.x * s, p.y * s, p.size * s, p.top * s);
+    if (p.left) ctx.fillRect(p.x * s, (p.y + p.top) * s, p.left * s, (p.size - p.top) * s);
+    // The warp as a grid deformed by the displacements (exaggerated 3x so a pixel shows).
+    const n = Math.ceil(p.size / 4);
+    const at = (i, j) => {
+      const k = (j * n + i) * 2;
+      return [(p.x + i * 4 + 3 * p.grid[k]) * s, (p.y + j * 4 + 3 * p.grid[k + 1]) * s];
+    };
+    ctx.strokeStyle = 'rgba(120,255,160,0.5)';
+    for (let j = 0; j < n; j++) {
+      ctx.beginPath();
+      for (let i = 0; i < n; i++) (i ? ctx.lineTo : ctx.moveTo).apply(ctx, at(i, j));
+      ctx.stroke();
+    }
+    for (let i = 0; i < n; i++) {
+      ctx.beginPath();
+      for (let j = 0; j < n; j++) (j ? ctx.lineTo : ctx.moveTo).apply(ctx, at(i, j));
+      ctx.stroke();
+    }
+    ctx.strokeStyle = 'rgba(80,230,255,0.95)';
+    for (let k = 0; k < p.pairs.length; k += 4) {
+      ctx.beginPath();
+      ctx.moveTo(p.pairs[k + 2] * s, p.pairs[k + 3] * s);
+      ctx.lineTo(p.pairs[k] * s, p.pairs[k + 1] * s);
+      ctx.stroke();
+    }
+    ctx.restore();
+  }
+
+  function zoomCanvas() {
+    // Draw the output 2x so the teaching overlay is legible.
+    const canvas = ui.outputCanvas;
+    const src = document.createElement('canvas');
+    drawInto(src, synthesis);
+    canvas.width = synthesis.width * 2;
+    canvas.height = synthesis.height * 2;
+    const ctx = canvas.getContext('2d');
+    ctx.imageSmoothingEnabled = false;
+    ctx.drawImage(src, 0, 0, canvas.width, canvas.height);
+  }
+
+  function broken(session) {
+    const rgba = new Uint8ClampedArray(session.width * session.height * 4);
+    session.renderInto(rgba);
+    return measureBrokenFeatures(ui.exemplar(), rgba, session.width, session.height, detectOptions());
+  }
+
+  function resetSessions() {
+    synthesis?.free();
+    synthesis = null;
+    graphcut?.free();
+    graphcut = null;
+    delete document.body.dataset.featuresDone;
+  }
+
+  return {
+    id,
+    title,
+    optionsHtml: OPTIONS_HTML,
+    sideHtml: SIDE_HTML,
+    mount() {
+      const ex = ui.$('fg-exemplar');
+      ex.onpointerdown = (e) => { painting = true; paintAt(e); };
+      ex.onpointermove = (e) => painting && paintAt(e);
+      this.onPointerUp = () => { painting = false; };
+      window.addEventListener('pointerup', this.onPointerUp);
+      ui.$('fg-threshold').addEventListener('input', () => {
+        ui.$('fg-threshold-value').textContent = Number(ui.$('fg-threshold').value).toFixed(2);
+      });
+      for (const id of ['fg-threshold', 'fg-kind']) {
+        ui.$(id).addEventListener('change', () => { detect(); resetSessions(); });
+      }
+    },
+    unmount() {
+      window.removeEventListener('pointerup', this.onPointerUp);
+      resetSessions();
+      map?.free();
+      map = null;
+    },
+    step() {
+      if (!synthesis) {
+        if (!map || mapOf !== ui.exemplar()) detect();
+        synthesis = FeatureSynthesis.withFeatureMap(ui.exemplar(), map, options());
+      }
+      if (!synthesis.done) {
+        const event = synthesis.step();
+        const compare = ui.$('fg-compare').checked;
+        return { ...event, phase: 'features', done: event.done && !compare };
+      }
+      if (!graphcut) {
+        graphcut = new GraphcutTextures(ui.exemplar(), { outputWidth: ui.outputWidth(), outputHeight: ui.outputHeight(), seed: ui.seed() });
+      }
+      if (graphcut.done) return null;
+      const event = graphcut.step();
+      return { ...event, phase: 'graphcut' };
+    },
+    onStep(event) {
+      if (event.phase === 'features') {
+        zoomCanvas();
+        drawPlacement();
+        drawInto(ui.$('fg-map'), { width: synthesis.width, height: synthesis.height, renderInto: (b) => synthesis.renderFeatures(b) });
+        const how = event.colourOnly ? 'colour only (no oriented features to match)'
+          : `feature cost ${event.featureCost.toFixed(2)} · colour ${event.colourCost.toExponential(2)}`;
+        ui.$('fg-readout').textContent = `patch ${event.patch + 1}/${event.patches} from (${event.sourceX}, ${event.sourceY}) · ` +
+          `${event.contextFeatures} context features · ${event.correspondences} correspondences · warp: ${event.warp} · ${how}`;
+        document.body.dataset.featurePatches = String(event.patch + 1);
+        if (event.patch + 1 === event.patches) {
+          const b = broken(synthesis);
+          showQuality(ui.$('fg-quality'), ui.exemplar(), synthesis);
+          ui.$('fg-quality').textContent += ` · broken features ${b.toFixed(1)}`;
+          ui.$('fg-quality').dataset.broken = String(b);
+          if (!ui.$('fg-compare').checked) document.body.dataset.featuresDone = 'true';
+        }
+      } else {
+        drawInto(ui.$('fg-graphcut'), graphcut);
+        if (event.done) {
+          const b = broken(graphcut);
+          ui.$('fg-graphcut-caption').textContent = `plain graph cut, same exemplar and seed · broken features ${b.toFixed(1)}` +
+            ` (feature-guided: ${Number(ui.$('fg-quality').dataset.broken).toFixed(1)}; lower is better)`;
+          ui.$('fg-graphcut-caption').dataset.broken = String(b);
+          document.body.dataset.featuresDone = 'true';
+        }
+      }
+    },
+    reset() {
+      resetSessions();
+      if (ui.exemplar()) {
+        detect();
+        const ctx = ui.outputCanvas.getContext('2d');
+        ctx.clearRect(0, 0, ui.outputCanvas.width, ui.outputCanvas.height);
+      }
+      const readout = ui.$('fg-readout');
+      if (readout) readout.textContent = 'press Run or Step';
+      if (ui.$('fg-quality')) ui.$('fg-quality').textContent = '';
+    },
+  };
+}
