@@ -22,3 +22,5 @@ echo "max-flow on seam graphs, native, against the reference (Dinic) solver:"
 cargo test --release --lib -q -- --ignored --nocapture maxflow_timing 2>/dev/null | grep -vE "^(running|test |$)|test result"
 echo
 node scripts/bench-design.mjs
+echo
+node scripts/bench-features.mjs
