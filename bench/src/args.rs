@@ -10,7 +10,7 @@ usage: compare [options]
   --dir DIR             folder of exemplar images, PNG or JPEG (default: www/samples)
   --size WxH            output size (default: 256x256)
   --seeds 1,2,3         seeds; wall time is the median over them, quality the mean (default: 1,2,3)
-  --methods a,b,...     any of optimization, graphcut-random, graphcut-entire, graphcut-sub, peer
+  --methods a,b,...     any of optimization, graphcut-random, graphcut-entire, graphcut-sub, features, peer
                         (default: all)
   --crop WxH            cut the centre WxH out of each exemplar first (default: no crop)
   --exemplar-size N     then shrink so the longer side is at most N; 0 keeps any size (default: 256)

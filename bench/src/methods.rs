@@ -5,7 +5,7 @@ use std::time::Instant;
 
 use serde_json::{Value, json};
 use texsynth::core::Image;
-use texsynth::methods::{graphcut, optimization};
+use texsynth::methods::{features, graphcut, optimization};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Method {
@@ -15,17 +15,20 @@ pub enum Method {
     GraphcutRandom,
     GraphcutEntire,
     GraphcutSub,
+    /// Feature-guided synthesis (Wu & Yu 2004).
+    Features,
     /// The texture-synthesis crate (see peer.rs).
     Peer,
 }
 
 impl Method {
     /// Canonical order: the table, the contact sheet and the files list methods in this order.
-    pub const ALL: [Method; 5] = [
+    pub const ALL: [Method; 6] = [
         Method::Optimization,
         Method::GraphcutRandom,
         Method::GraphcutEntire,
         Method::GraphcutSub,
+        Method::Features,
         Method::Peer,
     ];
 
@@ -35,6 +38,7 @@ impl Method {
             Method::GraphcutRandom => "graphcut-random",
             Method::GraphcutEntire => "graphcut-entire",
             Method::GraphcutSub => "graphcut-sub",
+            Method::Features => "features",
             Method::Peer => "peer",
         }
     }
@@ -57,6 +61,7 @@ impl Method {
             Method::GraphcutRandom => Some(placement(graphcut::Placement::Random)),
             Method::GraphcutEntire => Some(placement(graphcut::Placement::EntirePatch)),
             Method::GraphcutSub => Some(placement(graphcut::Placement::SubPatch)),
+            Method::Features => Some(json!({ "class": "FeatureSynthesis", "options": {} })),
             Method::Peer => None,
         }
     }
@@ -126,6 +131,24 @@ pub fn run_ours(
                 steps,
                 max_step_ms,
                 output,
+            })
+        }
+        Method::Features => {
+            let options = features::FeatureOptions {
+                output_width: width,
+                output_height: height,
+                seed,
+                ..features::FeatureOptions::default()
+            };
+            let start = Instant::now();
+            let mut session = features::FeatureSynthesis::new(exemplar, None, options).map_err(err)?;
+            let (steps, max_step_ms) = step_all(|| Ok(session.step()?.done))?;
+            let total_ms = ms(start);
+            Ok(Run {
+                total_ms,
+                steps,
+                max_step_ms,
+                output: session.image().clone(),
             })
         }
         Method::Peer => unreachable!("the peer runs through peer::run"),
