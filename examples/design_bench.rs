@@ -1,10 +1,11 @@
 //! Texture design (Shen et al. 2009) timings, native: `cargo run --release --example
-//! design_bench` (the wasm figures come from `scripts/bench.mjs`). Prints
+//! design_bench` (the wasm figures come from `scripts/bench-design.mjs`). Prints
 //! - layer-based design at 360x360 with patches of 32, 64 and 92 (Table 2), QTP against
 //!   exhaustive search on the same layout, always taking the best match so both make the same
 //!   choices when they find the same patch: time, pixel differences computed and total SSD;
 //! - making a 256x256 and a 1024x1024 image tileable;
 //! - one brush stroke (labelling and Poisson paste) on a 256x256 base.
+//!
 //! `DESIGN_SAMPLE` picks the layer texture (default tiles_128).
 
 use std::time::Instant;

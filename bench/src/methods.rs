@@ -141,7 +141,8 @@ pub fn run_ours(
                 ..features::FeatureOptions::default()
             };
             let start = Instant::now();
-            let mut session = features::FeatureSynthesis::new(exemplar, None, options).map_err(err)?;
+            let mut session =
+                features::FeatureSynthesis::new(exemplar, None, options).map_err(err)?;
             let (steps, max_step_ms) = step_all(|| Ok(session.step()?.done))?;
             let total_ms = ms(start);
             Ok(Run {

@@ -4,6 +4,9 @@
 //! weighting as the fallback when the spline's linear system is ill-conditioned or its result
 //! misses the constraints.
 
+/// A control point: its position and the displacement wanted there.
+pub type ControlPoint = ((f64, f64), (f64, f64));
+
 /// A displacement field given at control points.
 pub trait Interpolant {
     /// The displacement at (x, y).
@@ -41,7 +44,7 @@ pub const CONSTRAINT_TOLERANCE: f64 = 0.05;
 
 impl ThinPlateSpline {
     /// Fits the spline through `points` (position, displacement).
-    pub fn fit(points: &[((f64, f64), (f64, f64))]) -> Result<ThinPlateSpline, SplineFailure> {
+    pub fn fit(points: &[ControlPoint]) -> Result<ThinPlateSpline, SplineFailure> {
         let n = points.len();
         if n < 3 {
             return Err(SplineFailure::Degenerate);
@@ -147,12 +150,12 @@ fn solve_in_place(a: &mut [f64], b: &mut [[f64; 2]], size: usize) -> Option<()> 
 /// Shepard's inverse-distance-squared weighting: exact at the control points, always defined.
 #[derive(Debug, Clone)]
 pub struct Shepard {
-    points: Vec<((f64, f64), (f64, f64))>,
+    points: Vec<ControlPoint>,
 }
 
 impl Shepard {
     #[must_use]
-    pub fn new(points: &[((f64, f64), (f64, f64))]) -> Shepard {
+    pub fn new(points: &[ControlPoint]) -> Shepard {
         Shepard {
             points: points.to_vec(),
         }
@@ -188,7 +191,7 @@ pub enum Warp {
 
 impl Warp {
     #[must_use]
-    pub fn fit(points: &[((f64, f64), (f64, f64))]) -> Warp {
+    pub fn fit(points: &[ControlPoint]) -> Warp {
         match ThinPlateSpline::fit(points) {
             Ok(s) => Warp::Spline(s),
             Err(why) => Warp::Shepard(Shepard::new(points), why),
@@ -210,7 +213,7 @@ mod tests {
     use super::*;
     use crate::core::Rng;
 
-    fn random_points(n: usize, seed: u64) -> Vec<((f64, f64), (f64, f64))> {
+    fn random_points(n: usize, seed: u64) -> Vec<ControlPoint> {
         let mut rng = Rng::new(seed);
         (0..n)
             .map(|_| {

@@ -26,7 +26,11 @@ fn a_feature_map_is_detected_edited_and_used() {
     let mut s = FeatureSynthesis::with_feature_map(
         &ex,
         &map,
-        options(&[("outputWidth", 96.into()), ("outputHeight", 96.into()), ("patchSize", 32.into())]),
+        options(&[
+            ("outputWidth", 96.into()),
+            ("outputHeight", 96.into()),
+            ("patchSize", 32.into()),
+        ]),
     )
     .unwrap();
     let mut steps = 0;
@@ -55,12 +59,29 @@ fn bad_feature_input_is_named() {
     let ex = Exemplar::from_bytes(TILES_64).unwrap();
     let msg = |v: JsValue| error_message(FeatureSynthesis::new(&ex, v));
     assert!(msg(options(&[("patchSize", 100.into())])).contains("patchSize"));
-    assert!(msg(options(&[("features", "corners".into())])).contains("'edges', 'ridges' or 'both'"));
+    assert!(
+        msg(options(&[("features", "corners".into())])).contains("'edges', 'ridges' or 'both'")
+    );
     assert!(msg(options(&[("threshold", 2.into())])).contains("threshold"));
     assert!(msg(options(&[("featureWeight", f64::NAN.into())])).contains("featureWeight"));
-    assert!(msg(options(&[("extraInputs", Array::of1(&"spin".into()).into())])).contains("extraInputs"));
+    assert!(
+        msg(options(&[(
+            "extraInputs",
+            Array::of1(&"spin".into()).into()
+        )]))
+        .contains("extraInputs")
+    );
     assert!(msg(options(&[("warpp", true.into())])).contains("unknown option 'warpp'"));
     let mut map = detect_features(&ex, JsValue::UNDEFINED).unwrap();
     assert!(error_message(map.paint(f32::NAN, 1.0, 2.0, true)).contains("invalid x"));
-    assert!(error_message(measure_broken_features(&ex, &[0; 12], 4, 4, JsValue::UNDEFINED)).contains("length"));
+    assert!(
+        error_message(measure_broken_features(
+            &ex,
+            &[0; 12],
+            4,
+            4,
+            JsValue::UNDEFINED
+        ))
+        .contains("length")
+    );
 }

@@ -48,7 +48,7 @@ pub fn align(
     let (w, _) = index.size();
     // Control points: each context feature should show the exemplar feature it corresponds to,
     // so the output pixel at x_i reads the patch at x'_i: displacement x'_i - x_i.
-    let mut points: Vec<((f64, f64), (f64, f64))> = correspondences
+    let mut points: Vec<crate::solvers::tps::ControlPoint> = correspondences
         .iter()
         .map(|c| {
             let f = context[c.context];

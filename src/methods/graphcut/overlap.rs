@@ -28,9 +28,9 @@ pub fn keep_old(graph: &mut Graph, o: &Overlap<'_>) -> Result<Vec<bool>> {
     let n = w * h;
     let mut node = vec![usize::MAX; n];
     let mut count = 0;
-    for i in 0..n {
-        if o.made[i] {
-            node[i] = count;
+    for (slot, &made) in node.iter_mut().zip(o.made) {
+        if made {
+            *slot = count;
             count += 1;
         }
     }
