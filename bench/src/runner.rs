@@ -7,6 +7,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use serde::Serialize;
 use texsynth::core::{Image, from_rgba8, to_rgba8};
+use texsynth::methods::features::DetectOptions;
+use texsynth::methods::features::broken::broken_features;
 use texsynth::methods::quality::{Quality, quality};
 
 use crate::methods::{self, Method, Run};
@@ -99,7 +101,7 @@ pub fn run_exemplar(
         .collect();
     for (t, score) in timed.into_iter().zip(scores) {
         let m = &mut out[t.method];
-        let q = match score {
+        let (q, broken) = match score {
             Ok(q) => q,
             Err(message) => {
                 m.errors.push(RunError {
@@ -120,6 +122,7 @@ pub fn run_exemplar(
             completeness: q.completeness,
             histogram: q.histogram,
             flat: q.flat,
+            broken,
             output_hash,
             wasm_ms: None,
             wasm_steps: None,
@@ -153,12 +156,13 @@ pub fn run_exemplar(
 
 /// The quality of every output, on all cores: the exact nearest-patch search is the slow part
 /// of the whole benchmark, and it is not timed.
-fn score_all(exemplar: &Image, timed: &[Timed]) -> Vec<Result<Quality, String>> {
+fn score_all(exemplar: &Image, timed: &[Timed]) -> Vec<Result<(Quality, f64), String>> {
     let threads = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
         .min(timed.len().max(1));
     let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<Option<Result<Quality, String>>>> = Mutex::new(vec![None; timed.len()]);
+    let results: Mutex<Vec<Option<Result<(Quality, f64), String>>>> =
+        Mutex::new(vec![None; timed.len()]);
     std::thread::scope(|s| {
         for _ in 0..threads {
             s.spawn(|| {
@@ -167,7 +171,10 @@ fn score_all(exemplar: &Image, timed: &[Timed]) -> Vec<Result<Quality, String>> 
                     let Some(t) = timed.get(i) else { break };
                     let (w, h) = (t.run.output.width(), t.run.output.height());
                     let q = from_rgba8(w, h, &t.rgba)
-                        .and_then(|out| quality(exemplar, &out))
+                        .and_then(|out| {
+                            let broken = broken_features(exemplar, &out, DetectOptions::default())?;
+                            Ok((quality(exemplar, &out)?, broken))
+                        })
                         .map_err(|e| e.to_string());
                     results.lock().expect("no thread panics holding the lock")[i] = Some(q);
                 }

@@ -16,6 +16,9 @@ pub struct RunFigures {
     pub histogram: f64,
     /// Flat fraction (the detail metric): about 0.10 for the exemplar itself.
     pub flat: f64,
+    /// Broken-feature count (Wu & Yu's curves): curve ends per 1000 curve pixels above the
+    /// exemplar's own; lower is better.
+    pub broken: f64,
     /// FNV-1a of the output's RGBA8 pixels (native).
     pub output_hash: String,
     pub wasm_ms: Option<f64>,
@@ -37,6 +40,7 @@ pub struct Cell {
     pub completeness: Option<f64>,
     pub histogram: Option<f64>,
     pub flat: Option<f64>,
+    pub broken: Option<f64>,
     pub wasm_identical: Option<bool>,
 }
 
@@ -102,6 +106,7 @@ pub fn cell(runs: &[RunFigures]) -> Cell {
         completeness: mean(&of(|r| Some(r.completeness))),
         histogram: mean(&of(|r| Some(r.histogram))),
         flat: mean(&of(|r| Some(r.flat))),
+        broken: mean(&of(|r| Some(r.broken))),
         wasm_identical: (!identical.is_empty()).then(|| identical.iter().all(|&b| b)),
     }
 }
@@ -121,6 +126,7 @@ pub fn summary(cells: &[&Cell]) -> Cell {
         completeness: of(|c| c.completeness),
         histogram: of(|c| c.histogram),
         flat: of(|c| c.flat),
+        broken: of(|c| c.broken),
         wasm_identical: (!identical.is_empty()).then(|| identical.iter().all(|&b| b)),
     }
 }
@@ -169,6 +175,7 @@ mod tests {
             completeness: 2.0 * coherence,
             histogram: 0.01,
             flat: 0.1,
+            broken: 1.0,
             output_hash: String::new(),
             wasm_ms: Some(2.0 * ms),
             wasm_steps: Some(steps),
