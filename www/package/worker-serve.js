@@ -1,0 +1,113 @@
+// The inside of a texsynth worker (Web Worker or worker_threads): owns sessions, runs them, and
+// answers the client of worker-client.js. Messages in: { id, type, ... }; every reply carries
+// the id of the request it answers. Images travel as transferred ArrayBuffers.
+//   create { kind, args }       args: exemplars as { bytes } or { rgba, width, height }
+//   step   { render }           one step -> { event, image? }
+//   run    { render, every }    steps until done or paused; streams { type: 'event', event, image? }
+//   pause                       stops a run after the current step
+//   call   { method, args }     any session method or getter (teaching views: schedule, field, ...)
+//   render { method, width?, height? } -> { image, width, height } (renderInto, renderOffsetMap, renderSeams, ...)
+//   free
+const EXEMPLAR_ARGS = {
+  TextureOptimization: [0], GraphcutTextures: [0], FlowAnimation: [0], TileableSession: [0],
+  TextureBrush: [0], GraphcutMerge: [], LayerDesign: [],
+};
+
+export function serve(lib, { post, listen }) {
+  const sessions = new Map();
+  const running = new Map();
+
+  const toExemplar = (value) => {
+    if (value instanceof lib.Exemplar) return value;
+    if (value?.bytes) return lib.Exemplar.fromBytes(new Uint8Array(value.bytes));
+    if (value?.rgba) return lib.Exemplar.fromRgba(new Uint8Array(value.rgba.buffer ?? value.rgba), value.width, value.height);
+    return value;
+  };
+  // Exemplar arguments of methods (addSource, addLayer) are marked { exemplar: ... }.
+  const convertArgs = (args) => args.map((a) => (a && typeof a === 'object' && 'exemplar' in a ? toExemplar(a.exemplar) : a));
+  const cloneable = (value) => {
+    if (value instanceof lib.Exemplar) {
+      const rgba = value.toRgba();
+      const out = { width: value.width, height: value.height, rgba };
+      value.free();
+      return out;
+    }
+    return value;
+  };
+  const image = (session, method = 'renderInto', width = session.width, height = session.height) => {
+    const data = new Uint8ClampedArray(width * height * 4);
+    session[method](data);
+    return { image: data.buffer, width, height };
+  };
+  const reply = (id, body, transfer = []) => post({ id, ...body }, transfer);
+  const fail = (id, error) => reply(id, { type: 'error', message: error?.message ?? String(error), name: error?.name ?? 'Error' });
+  const yieldNow = () => new Promise((r) => setTimeout(r, 0));
+
+  async function run(id, session, { render = 'renderInto', every = 1 } = {}) {
+    running.set(id, true);
+    let count = 0;
+    let last = null;
+    while (running.get(id) && !session.done) {
+      last = session.step();
+      count++;
+      const body = { type: 'event', event: last };
+      const transfer = [];
+      if (render && (last?.done || count % every === 0)) {
+        Object.assign(body, image(session, render));
+        transfer.push(body.image);
+      }
+      reply(id, body, transfer);
+      if (last?.done) break;
+      await yieldNow(); // lets a pause message in
+    }
+    const paused = !session.done && !last?.done;
+    running.delete(id);
+    reply(id, { type: 'result', value: { paused, event: last } });
+  }
+
+  listen(async (message) => {
+    const { id, type, session: sid } = message;
+    try {
+      if (type === 'create') {
+        const Cls = lib[message.kind];
+        if (!(message.kind in EXEMPLAR_ARGS) || typeof Cls !== 'function') throw new Error(`unknown session kind '${message.kind}'`);
+        const args = message.args.map((a, i) => (EXEMPLAR_ARGS[message.kind].includes(i) ? toExemplar(a) : a));
+        const session = new Cls(...args);
+        for (const a of args) if (a instanceof lib.Exemplar) a.free();
+        sessions.set(id, session);
+        reply(id, { type: 'result', value: { session: id, width: session.width, height: session.height } });
+        return;
+      }
+      const session = sessions.get(sid);
+      if (!session) throw new Error(`no session ${sid} in this worker`);
+      if (type === 'step') {
+        const event = session.step();
+        const body = { type: 'result', value: { event } };
+        if (message.render) {
+          const img = image(session, message.render);
+          Object.assign(body.value, img);
+          reply(id, body, [img.image]);
+        } else reply(id, body);
+      } else if (type === 'run') {
+        await run(id, session, message);
+      } else if (type === 'pause') {
+        for (const key of running.keys()) running.set(key, false);
+        reply(id, { type: 'result', value: null });
+      } else if (type === 'call') {
+        const member = session[message.method];
+        const value = typeof member === 'function' ? member.apply(session, convertArgs(message.args ?? [])) : member;
+        reply(id, { type: 'result', value: cloneable(value) });
+      } else if (type === 'render') {
+        const img = image(session, message.method, message.width, message.height);
+        reply(id, { type: 'result', value: img }, [img.image]);
+      } else if (type === 'free') {
+        session.free();
+        sessions.delete(sid);
+        reply(id, { type: 'result', value: null });
+      } else throw new Error(`unknown message type '${type}'`);
+    } catch (error) {
+      running.delete(id);
+      fail(id, error);
+    }
+  });
+}
