@@ -12,6 +12,7 @@ export class TexsynthWorker {
     this.ready = new Promise((resolve, reject) => {
       this.port.onMessage((message) => {
         if (message.type === 'ready') return resolve();
+        if (message.type === 'failed') return reject(new Error(`texsynth worker could not start: ${message.message}`));
         const request = this.pending.get(message.id);
         if (!request) return;
         if (message.type === 'event') return request.onEvent?.(message);
