@@ -107,13 +107,25 @@ function progress(label) {
   };
 }
 
-/** How far along a session is, from its event (0..1). */
-function fractionOf(kind, event, session) {
-  if (event.done) return 1;
-  if (kind === 'GraphcutTextures') return Math.min(0.99, event.covered ?? 0);
-  if (kind === 'FlowAnimation') return (event.frame ?? 0) / (session?.frames ?? 1);
-  if (kind === 'TextureOptimization') return Math.min(0.99, ((event.level ?? 0) + (event.iteration ?? 0) / 6) / (event.levelCount || 1));
-  return 0;
+/** How far along a session is, from its events (0..1). */
+function progressOf(kind, session, options) {
+  let area = 0;
+  let placedWhenCovered = null;
+  return (event) => {
+    if (event.done) return 1;
+    if (kind === 'GraphcutTextures') {
+      // Covering the output (by patch area, overlaps counted twice), then the refinement patches.
+      if (!event.covered) {
+        area += event.rect ? event.rect.width * event.rect.height : 0;
+        return Math.min(0.8, (0.8 * area) / (session.width * session.height));
+      }
+      placedWhenCovered ??= event.patchesPlaced;
+      return 0.8 + (0.2 * (event.patchesPlaced - placedWhenCovered)) / (options.refinementPatches ?? 24);
+    }
+    if (kind === 'FlowAnimation') return (event.frame ?? 0) / (session.frames || 1);
+    if (kind === 'TextureOptimization') return Math.min(0.99, ((event.level ?? 0) + (event.iteration ?? 0) / 6) / (event.levelCount || 1));
+    return 0;
+  };
 }
 
 const SESSION_OF = { optimization: 'TextureOptimization', graphcut: 'GraphcutTextures' };
@@ -147,9 +159,10 @@ async function synth(positionals, values) {
     for (const task of tasks) {
       const bar = progress(many ? `${basename(task.input)} s${task.seed}` : method);
       const session = new CLASSES[kind](exemplars.get(task.input), { ...options, seed: task.seed });
+      const fraction = progressOf(kind, session, options);
       for (const event of session) {
         emit(task, event);
-        bar.update(fractionOf(kind, event, session), event.kind);
+        bar.update(fraction(event), event.kind);
       }
       bar.end();
       const rgba = new Uint8ClampedArray(session.width * session.height * 4);

@@ -53,12 +53,15 @@ export class TexsynthWorker {
   }
 }
 
-/** Exemplar arguments: an Exemplar instance, PNG/JPEG bytes ({ bytes }), or { rgba, width, height }. */
+/**
+ * Exemplar arguments: an Exemplar instance (sent as PNG, which keeps its channels), PNG/JPEG
+ * bytes ({ bytes }), or { rgba, width, height }.
+ */
 function exemplarWire(value, transfer) {
-  if (value && typeof value === 'object' && typeof value.toRgba === 'function' && 'width' in value) {
-    const rgba = value.toRgba();
-    transfer.push(rgba.buffer);
-    return { rgba, width: value.width, height: value.height };
+  if (value && typeof value === 'object' && typeof value.toPng === 'function' && 'width' in value) {
+    const bytes = value.toPng();
+    transfer.push(bytes.buffer);
+    return { bytes };
   }
   return value;
 }
@@ -116,9 +119,92 @@ export class WorkerSession {
     return imageOf(await this.worker.request({ type: 'render', session: this.id, method, width, height }));
   }
 
+  /** measureQuality of the current output against the exemplar the session was made from. */
+  quality() {
+    return this.worker.request({ type: 'quality', session: this.id });
+  }
+
   free() {
     return this.worker.request({ type: 'free', session: this.id });
   }
+
+  /**
+   * A synchronous mirror of this session for a page's drawing code (see MirrorSession).
+   */
+  mirror(spec) {
+    return new MirrorSession(this, spec);
+  }
+}
+
+/**
+ * The view of a worker session that drawing code written for a local session can use unchanged:
+ * `await mirror.step()` runs a step in the worker and brings back, in the same reply, the views
+ * (`renderInto`, `renderOffsetMap`, `renderSeams`, ...: rendered in the worker, transferred), the
+ * method results (`energyHistory`, `field`, `schedule`, ...) and the getters the spec names; the
+ * mirror then answers `renderInto(buffer)`, `field()`, `done`, ... synchronously from those copies.
+ * `spec`: { views, calls, getters } wanted after every step (a function returning them is asked
+ * each time), and `finalViews` / `finalCalls` wanted after the last step (default: the same).
+ * Other methods (setConstraints, clearConstraints, ...) are sent in order with `send(method, ...args)`.
+ */
+export class MirrorSession {
+  constructor(remote, spec) {
+    this.remote = remote;
+    this.spec = spec;
+    this.state = { views: {}, calls: {}, getters: { done: false, width: remote.width, height: remote.height } };
+  }
+
+  wanted() {
+    const spec = typeof this.spec === 'function' ? this.spec() : this.spec;
+    return { views: [], calls: [], getters: [], ...spec };
+  }
+
+  apply(value) {
+    Object.assign(this.state.views, value.views);
+    Object.assign(this.state.calls, value.calls);
+    Object.assign(this.state.getters, value.getters);
+  }
+
+  async step() {
+    const value = await this.remote.worker.request({ type: 'step', session: this.remote.id, snapshot: this.wanted() });
+    this.apply(value);
+    return value.event;
+  }
+
+  /** Fetches the wanted views again (after a view toggle or a `send`). */
+  async refresh(spec = this.wanted()) {
+    this.apply(await this.remote.worker.request({ type: 'snapshot', session: this.remote.id, ...spec }));
+    return this;
+  }
+
+  /** Calls a method in the worker, in order with the steps. */
+  send(method, ...args) {
+    return this.remote.call(method, ...args);
+  }
+
+  /** Whether `view` (e.g. 'renderOffsetMap') has been fetched. */
+  has(view) {
+    return view in this.state.views || view in this.state.calls;
+  }
+
+  /** Copies the last fetched `view` into `target` (transparent if it was never fetched). */
+  view(name, target) {
+    const view = this.state.views[name];
+    if (!view) return target.fill(0);
+    target.set(new Uint8ClampedArray(view.image));
+  }
+
+  result(name) {
+    return this.state.calls[name];
+  }
+
+  get done() { return this.state.getters.done; }
+  get width() { return this.state.getters.width; }
+  get height() { return this.state.getters.height; }
+  getter(name) { return this.state.getters[name]; }
+
+  renderInto(target) { this.view('renderInto', target); }
+  quality() { return this.remote.quality(); }
+  free() { return this.remote.free(); }
 }
 
 const imageOf = ({ image, width, height }) => ({ data: new Uint8ClampedArray(image), width, height });

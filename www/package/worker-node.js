@@ -1,7 +1,7 @@
 // `texsynth-wasm/worker` in Node: the same API over worker_threads.
 import { availableParallelism } from 'node:os';
 import { Worker } from 'node:worker_threads';
-import { TexsynthWorker, WorkerPool, WorkerSession } from './worker-client.js';
+import { MirrorSession, TexsynthWorker, WorkerPool, WorkerSession } from './worker-client.js';
 
 export function spawnWorker() {
   const worker = new Worker(new URL('./worker-thread.js', import.meta.url));
@@ -15,4 +15,4 @@ export function spawnWorker() {
 
 export const createWorker = () => new TexsynthWorker(spawnWorker);
 export const createPool = (size = Math.min(4, availableParallelism())) => new WorkerPool(spawnWorker, size);
-export { TexsynthWorker, WorkerPool, WorkerSession };
+export { MirrorSession, TexsynthWorker, WorkerPool, WorkerSession };

@@ -7,6 +7,9 @@
 //   pause                       stops a run after the current step
 //   call   { method, args }     any session method or getter (teaching views: schedule, field, ...)
 //   render { method, width?, height? } -> { image, width, height } (renderInto, renderOffsetMap, renderSeams, ...)
+//   snapshot { views, calls, getters }   rendered views, method results and getters in one reply
+//     (step takes the same keys, plus finalViews / finalCalls wanted when that step finishes)
+//   quality                     measureQuality of the current output against the session's exemplar
 //   free
 const EXEMPLAR_ARGS = {
   TextureOptimization: [0], GraphcutTextures: [0], FlowAnimation: [0], TileableSession: [0],
@@ -15,6 +18,7 @@ const EXEMPLAR_ARGS = {
 
 export function serve(lib, { post, listen }) {
   const sessions = new Map();
+  const exemplars = new Map();
   const running = new Map();
 
   const toExemplar = (value) => {
@@ -38,6 +42,19 @@ export function serve(lib, { post, listen }) {
     const data = new Uint8ClampedArray(width * height * 4);
     session[method](data);
     return { image: data.buffer, width, height };
+  };
+  /** The views (rendered RGBA, transferred), method results and getters a mirror asked for. */
+  const snapshot = (session, { views = [], calls = [], getters = [] }) => {
+    const value = { views: {}, calls: {}, getters: { done: session.done, width: session.width, height: session.height } };
+    const transfer = [];
+    for (const view of views) {
+      const img = image(session, view);
+      value.views[view] = img;
+      transfer.push(img.image);
+    }
+    for (const call of calls) value.calls[call] = cloneable(session[call]());
+    for (const getter of getters) value.getters[getter] = session[getter];
+    return { value, transfer };
   };
   const reply = (id, body, transfer = []) => post({ id, ...body }, transfer);
   const fail = (id, error) => reply(id, { type: 'error', message: error?.message ?? String(error), name: error?.name ?? 'Error' });
@@ -73,14 +90,37 @@ export function serve(lib, { post, listen }) {
         if (!(message.kind in EXEMPLAR_ARGS) || typeof Cls !== 'function') throw new Error(`unknown session kind '${message.kind}'`);
         const args = message.args.map((a, i) => (EXEMPLAR_ARGS[message.kind].includes(i) ? toExemplar(a) : a));
         const session = new Cls(...args);
-        for (const a of args) if (a instanceof lib.Exemplar) a.free();
+        // The exemplar stays for `quality`; the others are freed.
+        const [exemplar, ...others] = args.filter((a) => a instanceof lib.Exemplar);
+        for (const a of others) a.free();
+        if (exemplar) exemplars.set(id, exemplar);
         sessions.set(id, session);
         reply(id, { type: 'result', value: { session: id, width: session.width, height: session.height } });
         return;
       }
       const session = sessions.get(sid);
       if (!session) throw new Error(`no session ${sid} in this worker`);
-      if (type === 'step') {
+      if (type === 'step' && message.snapshot) {
+        const event = session.step();
+        const spec = message.snapshot;
+        const final = event?.done || session.done;
+        const snap = snapshot(session, {
+          views: final ? spec.finalViews ?? spec.views : spec.views,
+          calls: final ? spec.finalCalls ?? spec.calls : spec.calls,
+          getters: spec.getters,
+        });
+        reply(id, { type: 'result', value: { event, ...snap.value } }, snap.transfer);
+      } else if (type === 'snapshot') {
+        const snap = snapshot(session, message);
+        reply(id, { type: 'result', value: snap.value }, snap.transfer);
+      } else if (type === 'quality') {
+        const exemplar = exemplars.get(sid);
+        if (!exemplar) throw new Error('this session has no exemplar to measure against');
+        const rgba = new Uint8ClampedArray(session.width * session.height * 4);
+        session.renderInto(rgba);
+        const q = lib.measureQuality(exemplar, rgba, session.width, session.height);
+        reply(id, { type: 'result', value: { coherence: q.coherence, completeness: q.completeness, histogram: q.histogram, flat: q.flat } });
+      } else if (type === 'step') {
         const event = session.step();
         const body = { type: 'result', value: { event } };
         if (message.render) {
@@ -103,6 +143,8 @@ export function serve(lib, { post, listen }) {
       } else if (type === 'free') {
         session.free();
         sessions.delete(sid);
+        exemplars.get(sid)?.free();
+        exemplars.delete(sid);
         reply(id, { type: 'result', value: null });
       } else throw new Error(`unknown message type '${type}'`);
     } catch (error) {

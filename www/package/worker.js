@@ -1,7 +1,7 @@
 // `texsynth-wasm/worker` in browsers: sessions in module Web Workers. Bundlers (Vite, webpack 5)
 // recognise `new Worker(new URL('./worker-web.js', import.meta.url), { type: 'module' })` and
 // bundle the worker with its .wasm.
-import { TexsynthWorker, WorkerPool, WorkerSession } from './worker-client.js';
+import { MirrorSession, TexsynthWorker, WorkerPool, WorkerSession } from './worker-client.js';
 
 export function spawnWorker() {
   const worker = new Worker(new URL('./worker-web.js', import.meta.url), { type: 'module' });
@@ -17,4 +17,4 @@ export function spawnWorker() {
 export const createWorker = () => new TexsynthWorker(spawnWorker);
 /** A pool of `size` workers (default: hardware concurrency, at most 4). */
 export const createPool = (size = Math.min(4, globalThis.navigator?.hardwareConcurrency ?? 2)) => new WorkerPool(spawnWorker, size);
-export { TexsynthWorker, WorkerPool, WorkerSession };
+export { MirrorSession, TexsynthWorker, WorkerPool, WorkerSession };
