@@ -166,7 +166,11 @@ export function createPanel(ui) {
     if (!session || !paint) return;
     const data = paint.getContext('2d').getImageData(0, 0, paint.width, paint.height).data;
     // Sent to the worker in order with the steps; a bad lambda comes back as an error.
-    session.send('setConstraints', new Uint8Array(data.buffer), Number(ui.$('to-lambda').value)).then(
+    // The refresh brings back `done`, which a finished run's constraints turn false again.
+    const current = session;
+    current.send('setConstraints', new Uint8Array(data.buffer), Number(ui.$('to-lambda').value))
+      .then(() => current.refresh({ getters: ['constraintEnergy'] }))
+      .then(
       () => {
         document.body.dataset.constraintsSet = String(Number(document.body.dataset.constraintsSet ?? 0) + 1);
         ui.run();
