@@ -513,7 +513,8 @@ export class LayerDesign implements Steppable<LayerDesignEvent> {
   [Symbol.dispose](): void;
   [Symbol.iterator](): Iterator<LayerDesignEvent>;
   run(options?: RunOptions<LayerDesignEvent>): Promise<LayerDesignEvent | null>;
-  addLayer(exemplar: Exemplar, deformations?: Deformation[]): number;
+  /** `deformations`: one, a list applied in order, or none (as for `deformTexture`). */
+  addLayer(exemplar: Exemplar, deformations?: Deformation | Deformation[] | null): number;
   setLayout(layout: Bytes): void;
   step(): LayerDesignEvent;
   renderInto(target: RgbaTarget): void;

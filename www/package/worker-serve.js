@@ -31,8 +31,8 @@ export function serve(lib, { post, listen }) {
   const convertArgs = (args) => args.map((a) => (a && typeof a === 'object' && 'exemplar' in a ? toExemplar(a.exemplar) : a));
   const cloneable = (value) => {
     if (value instanceof lib.Exemplar) {
-      const rgba = value.toRgba();
-      const out = { width: value.width, height: value.height, rgba };
+      // As PNG, which keeps the channels: Exemplar.fromBytes(result.png) on the other side.
+      const out = { width: value.width, height: value.height, png: value.toPng() };
       value.free();
       return out;
     }

@@ -48,7 +48,11 @@ export class WorkerSession<K extends SessionKind = SessionKind> {
   run(options?: WorkerRunOptions<SessionKinds[K]['event']>): Promise<{ paused: boolean; event: SessionKinds[K]['event'] | null }>;
   /** Stops a run after the current step. */
   pause(): Promise<void>;
-  /** Calls a method or reads a getter of the session in the worker (schedule, field, energyHistory, setConstraints, ...). Exemplar arguments as `{ exemplar }`. */
+  /**
+   * Calls a method or reads a getter of the session in the worker (schedule, field, energyHistory,
+   * setConstraints, ...). Exemplar arguments as `{ exemplar }`; an Exemplar result comes back as
+   * `{ width, height, png }` (`Exemplar.fromBytes(png)` rebuilds it).
+   */
   call<T = unknown>(method: string, ...args: unknown[]): Promise<T>;
   /** A view rendered in the worker. */
   render(method?: RenderMethod, width?: number, height?: number): Promise<WorkerImage>;
