@@ -29,12 +29,17 @@ export function serve(lib, { post, listen }) {
   };
   // Exemplar arguments of methods (addSource, addLayer) are marked { exemplar: ... }.
   const convertArgs = (args) => args.map((a) => (a && typeof a === 'object' && 'exemplar' in a ? toExemplar(a.exemplar) : a));
+  // Exemplars (also inside plain objects and arrays, e.g. TileableSession.result()) travel as
+  // { width, height, png }: PNG keeps the channels; Exemplar.fromBytes(png) on the other side.
   const cloneable = (value) => {
     if (value instanceof lib.Exemplar) {
-      // As PNG, which keeps the channels: Exemplar.fromBytes(result.png) on the other side.
       const out = { width: value.width, height: value.height, png: value.toPng() };
       value.free();
       return out;
+    }
+    if (Array.isArray(value)) return value.map(cloneable);
+    if (value && typeof value === 'object' && Object.getPrototypeOf(value) === Object.prototype) {
+      return Object.fromEntries(Object.entries(value).map(([k, v]) => [k, cloneable(v)]));
     }
     return value;
   };
