@@ -3,13 +3,12 @@
 //   await session.run({ signal, onEvent })          // async, yields to the event loop between steps
 // Cancellation is by AbortSignal: `run` rejects with `signal.reason` (an AbortError by default)
 // before the next step once the signal is aborted. Steps themselves are never interrupted.
-import {
-  FlowAnimation, GraphcutMerge, GraphcutTextures, LayerDesign, TextureOptimization, TileableSession,
-} from './texsynth.js';
+// Every exported class with a `step()` method gets them, so a session added in Rust needs nothing here.
+import * as lib from './texsynth.js';
 
-export const SESSION_CLASSES = {
-  TextureOptimization, GraphcutTextures, GraphcutMerge, FlowAnimation, LayerDesign, TileableSession,
-};
+export const SESSION_CLASSES = Object.fromEntries(
+  Object.entries(lib).filter(([name, value]) => /^[A-Z]/.test(name) && typeof value === 'function' && typeof value.prototype?.step === 'function'),
+);
 
 /** Resolves on the next turn of the event loop, without the 4 ms clamp of nested timeouts. */
 export function yieldToEventLoop() {

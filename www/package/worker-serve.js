@@ -11,10 +11,11 @@
 //     (step takes the same keys, plus finalViews / finalCalls wanted when that step finishes)
 //   quality                     measureQuality of the current output against the session's exemplar
 //   free
-const EXEMPLAR_ARGS = {
-  TextureOptimization: [0], GraphcutTextures: [0], FlowAnimation: [0], TileableSession: [0],
-  TextureBrush: [0], GraphcutMerge: [], LayerDesign: [],
-};
+// Any class the package exports can be made here (a session added in Rust needs nothing in this
+// file); constructor arguments of the form { bytes } or { rgba, width, height } become Exemplars.
+const isExemplarWire = (a) =>
+  a !== null && typeof a === 'object' && !ArrayBuffer.isView(a) && !Array.isArray(a) &&
+  (('bytes' in a && Object.keys(a).length === 1) || ('rgba' in a && 'width' in a && 'height' in a && Object.keys(a).length === 3));
 
 export function serve(lib, { post, listen }) {
   const sessions = new Map();
@@ -65,11 +66,11 @@ export function serve(lib, { post, listen }) {
   const fail = (id, error) => reply(id, { type: 'error', message: error?.message ?? String(error), name: error?.name ?? 'Error' });
   const yieldNow = () => new Promise((r) => setTimeout(r, 0));
 
-  async function run(id, session, { render = 'renderInto', every = 1 } = {}) {
-    running.set(id, true);
+  async function run(id, sid, session, { render = 'renderInto', every = 1 } = {}) {
+    running.set(id, { session: sid, on: true });
     let count = 0;
     let last = null;
-    while (running.get(id) && !session.done) {
+    while (running.get(id)?.on && !session.done) {
       last = session.step();
       count++;
       const body = { type: 'event', event: last };
@@ -92,8 +93,10 @@ export function serve(lib, { post, listen }) {
     try {
       if (type === 'create') {
         const Cls = lib[message.kind];
-        if (!(message.kind in EXEMPLAR_ARGS) || typeof Cls !== 'function') throw new Error(`unknown session kind '${message.kind}'`);
-        const args = message.args.map((a, i) => (EXEMPLAR_ARGS[message.kind].includes(i) ? toExemplar(a) : a));
+        if (typeof Cls !== 'function' || !/^[A-Z]/.test(message.kind) || message.kind === 'Exemplar' || !Cls.prototype?.free) {
+          throw new Error(`unknown session kind '${message.kind}'`);
+        }
+        const args = message.args.map((a) => (isExemplarWire(a) ? toExemplar(a) : a));
         const session = new Cls(...args);
         // The exemplar stays for `quality`; the others are freed.
         const [exemplar, ...others] = args.filter((a) => a instanceof lib.Exemplar);
@@ -134,9 +137,9 @@ export function serve(lib, { post, listen }) {
           reply(id, body, [img.image]);
         } else reply(id, body);
       } else if (type === 'run') {
-        await run(id, session, message);
+        await run(id, sid, session, message);
       } else if (type === 'pause') {
-        for (const key of running.keys()) running.set(key, false);
+        for (const run of running.values()) if (run.session === sid) run.on = false;
         reply(id, { type: 'result', value: null });
       } else if (type === 'call') {
         const member = session[message.method];
