@@ -17,6 +17,9 @@ node_modules/.bin/wasm-opt -O3 \
   --enable-mutable-globals --enable-reference-types --enable-multivalue \
   pkg/texsynth_bg.wasm -o pkg/texsynth_bg.wasm
 node scripts/make-package-json.mjs
+# The hand-written entry points, types, worker wrapper and CLI (www/package/) beside the generated files.
+cp www/package/*.js www/package/*.d.ts pkg/
+chmod +x pkg/cli.js
 cp README.md pkg/README.md
 raw=$(stat -c %s pkg/texsynth_bg.wasm)
 gz=$(gzip -9 -c pkg/texsynth_bg.wasm | wc -c)

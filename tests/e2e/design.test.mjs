@@ -82,7 +82,8 @@ test('stage 4: layer-based design runs row by row to done', async () => {
   await page.fill('#dl-patch', '24');
   await page.dispatchEvent('#dl-patch', 'change');
   await page.click('#step');
-  assert.match(await page.textContent('#ds-readout'), /row 1\//);
+  // The step runs in the page's worker: wait for its reply.
+  await page.waitForFunction(() => /row 1\//.test(document.getElementById('ds-readout').textContent));
   await page.click('#run');
   await page.waitForSelector('body[data-layers-done="true"]', { timeout: 60_000 });
   const pixels = await canvasPixels(page);

@@ -1,40 +1,157 @@
-// The npm package as a user gets it: `npm pack ./pkg`, installed into a fresh Node project, imported.
-import { test } from 'node:test';
+// The npm package as a user gets it: `npm pack ./pkg`, installed into a fresh project, then used
+// in each environment the README describes: Node ESM with no init, the explicit `init()` entry,
+// the worker wrapper over worker_threads, the CLI (`npx texsynth-wasm`), TypeScript (`tsc
+// --noEmit` on an example that uses every export), and a Vite production build served and
+// opened in headless Chromium. The examples are the files of tests/e2e/pack/.
+import { after, before, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { createServer } from 'node:http';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { extname, join } from 'node:path';
+import { chromium } from 'playwright-core';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
-const npm = (args, cwd) => execFileSync('npm', args, { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+const PACK = join(ROOT, 'tests/e2e/pack');
+const SAMPLE = join(ROOT, 'www/samples/sand_64.png');
+const run = (cmd, args, cwd, options = {}) =>
+  execFileSync(cmd, args, { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'], ...options });
+const npm = (args, cwd) => run('npm', args, cwd);
 
-test('npm pack ./pkg installs into a scratch project that imports and uses it', () => {
-  const scratch = mkdtempSync(join(tmpdir(), 'texsynth-pack-'));
+let scratch;
+let app;
+let packed;
+
+before(() => {
+  scratch = mkdtempSync(join(tmpdir(), 'texsynth-pack-'));
+  packed = JSON.parse(npm(['pack', join(ROOT, 'pkg'), '--pack-destination', scratch, '--json'], ROOT))[0];
+  app = join(scratch, 'app');
+  mkdirSync(app);
+  writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'scratch', private: true, type: 'module' }));
+  npm(['install', '--no-audit', '--no-fund', join(scratch, packed.filename)], app);
+  for (const file of readdirSync(PACK)) cpSync(join(PACK, file), join(app, file), { recursive: true });
+});
+
+after(() => rmSync(scratch, { recursive: true, force: true }));
+
+test('the tarball holds the generated module, the entry points, types, worker and CLI', () => {
+  const files = packed.files.map((f) => f.path).sort();
+  const manifest = JSON.parse(readFileSync(join(ROOT, 'pkg.json'), 'utf8'));
+  assert.deepEqual(files, [...manifest.files, 'package.json'].sort());
+  const wasm = packed.files.find((f) => f.path === 'texsynth_bg.wasm').size;
+  console.log(`# package: ${packed.size} bytes packed, ${packed.unpackedSize} unpacked; wasm ${wasm} bytes`);
+});
+
+test('Node: import works with no init, sessions iterate, run() is cancelled by an AbortSignal', () => {
+  const out = JSON.parse(run('node', ['node-app.mjs', SAMPLE], app));
+  const manifest = JSON.parse(readFileSync(join(ROOT, 'pkg.json'), 'utf8'));
+  assert.equal(out.version, manifest.version);
+  assert.ok(out.steps > 2 && out.done, `steps ${out.steps}`);
+  assert.ok(out.coherence > 0 && out.coherence < 0.05, `coherence ${out.coherence}`);
+  assert.equal(out.placed, 3);
+  assert.equal(out.aborted, 'AbortError');
+  assert.equal(out.error, 'empty input: no image bytes were given');
+});
+
+test('Node: the explicit init() of texsynth-wasm/web takes a WebAssembly.Module', () => {
+  assert.equal(run('node', ['web-app.mjs', SAMPLE], app).trim(), '64');
+});
+
+test('Node: the worker wrapper runs a pool, teaching views and a cancelled run on worker_threads', () => {
+  const out = JSON.parse(run('node', ['worker-app.mjs', SAMPLE], app));
+  assert.deepEqual(out.pool, [[true, 64, 64 * 64 * 4], [true, 64, 64 * 64 * 4]]);
+  assert.equal(out.firstImage, 64 * 64 * 4);
+  assert.ok(out.levels >= 1);
+  assert.equal(out.offsets, 64 * 64 * 4);
+  assert.equal(out.aborted, 'AbortError');
+  assert.equal(out.finished, true);
+});
+
+test('TypeScript: tsc --noEmit on an example using every export (with expected errors) passes', () => {
+  run(join(ROOT, 'node_modules/.bin/tsc'), ['-p', 'tsconfig.json'], app);
+  // And a wrong type fails: the same example without its @ts-expect-error markers.
+  writeFileSync(join(app, 'wrong.ts'), readFileSync(join(app, 'example.ts'), 'utf8').replaceAll('// @ts-expect-error', '//'));
+  let failed = '';
   try {
-    const packed = JSON.parse(npm(['pack', join(ROOT, 'pkg'), '--pack-destination', scratch, '--json'], ROOT));
-    const files = packed[0].files.map((f) => f.path).sort();
-    assert.deepEqual(files, ['README.md', 'package.json', 'texsynth.d.ts', 'texsynth.js', 'texsynth_bg.wasm', 'texsynth_bg.wasm.d.ts']);
+    writeFileSync(join(app, 'tsconfig.wrong.json'), JSON.stringify({ extends: './tsconfig.json', files: ['wrong.ts'] }));
+    run(join(ROOT, 'node_modules/.bin/tsc'), ['-p', 'tsconfig.wrong.json'], app);
+  } catch (error) {
+    failed = error.stdout;
+  }
+  for (const code of ['TS2561', 'TS2322', 'TS2345']) assert.match(failed, new RegExp(code), failed);
+});
 
-    const app = join(scratch, 'app');
-    execFileSync('mkdir', ['-p', app]);
-    writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'scratch', private: true, type: 'module' }));
-    npm(['install', '--no-audit', '--no-fund', join(scratch, packed[0].filename)], app);
-    writeFileSync(join(app, 'use.mjs'), `
-      import { readFileSync } from 'node:fs';
-      import init, { Exemplar, version } from 'texsynth-wasm';
-      await init({ module_or_path: readFileSync(new URL(import.meta.resolve('texsynth-wasm/texsynth_bg.wasm'))) });
-      const ex = Exemplar.fromBytes(readFileSync(process.argv[2]));
-      const rgba = new Uint8ClampedArray(ex.width * ex.height * 4);
-      ex.renderInto(rgba);
-      let error = '';
-      try { Exemplar.fromBytes(new Uint8Array(0)); } catch (e) { error = e instanceof Error ? e.message : 'not an Error'; }
-      console.log(JSON.stringify({ version: version(), width: ex.width, height: ex.height, alpha: rgba[3], error }));
-    `);
-    const out = JSON.parse(execFileSync('node', ['use.mjs', join(ROOT, 'www/samples/sand_64.png')], { cwd: app, encoding: 'utf8' }));
-    const manifest = JSON.parse(readFileSync(join(ROOT, 'pkg.json'), 'utf8'));
-    assert.deepEqual(out, { version: manifest.version, width: 64, height: 64, alpha: 255, error: 'empty input: no image bytes were given' });
+test('CLI: synth, synth --jobs, animate, measure, --json, --help, and errors that name the problem', () => {
+  // npx once (the bin link); the rest call the same link directly (npx costs about 0.5 s a call).
+  assert.match(run('npx', ['--no-install', 'texsynth-wasm', '--help'], app), /synth IN\.png/);
+  const cli = (...args) => run(join(app, 'node_modules/.bin/texsynth-wasm'), args, app);
+  const synthLog = cli('synth', SAMPLE, '-o', 'out.png', '--method', 'optimization', '--size', '96x96', '--seed', '3', '--tileable', '--set', 'neighbourhoodSizes=[16,8]');
+  assert.ok(existsSync(join(app, 'out.png')), synthLog);
+  const lines = cli('synth', SAMPLE, '-o', 'gc.png', '--method', 'graphcut', '--size', '64x64', '--json').trim().split('\n').map((l) => JSON.parse(l));
+  assert.ok(lines.some((e) => e.kind === 'placed'));
+  assert.deepEqual(lines.at(-1), { kind: 'written', path: 'gc.png' });
+  cli('synth', SAMPLE, join(ROOT, 'www/samples/gravel_64.png'), '-o', 'jobs-{name}-{seed}.png', '--method', 'graphcut', '--size', '64x64', '--seed', '1,2', '--jobs', '2');
+  for (const name of ['sand_64', 'gravel_64']) for (const seed of [1, 2]) assert.ok(existsSync(join(app, `jobs-${name}-${seed}.png`)));
+  cli('animate', SAMPLE, '--flow', 'vortex', '--frames', '3', '--size', '48x48', '-o', 'frames');
+  assert.deepEqual(readdirSync(join(app, 'frames')).sort(), ['frame-0001.png', 'frame-0002.png', 'frame-0003.png']);
+  const measured = JSON.parse(cli('measure', SAMPLE, 'out.png', '--json'));
+  assert.ok(measured.coherence < 0.05 && measured.flat < 0.5, JSON.stringify(measured));
+  assert.match(cli('measure', SAMPLE, 'out.png'), /^coherence\s+\S+\ncompleteness/);
+
+  const failing = (args, pattern) => {
+    try {
+      cli(...args);
+    } catch (error) {
+      assert.ok(error.status > 0);
+      assert.match(error.stderr, pattern);
+      return;
+    }
+    assert.fail(`texsynth-wasm ${args.join(' ')} should fail`);
+  };
+  failing(['synth', 'missing.png', '-o', 'x.png'], /missing\.png: no such file/);
+  failing(['synth', 'package.json', '-o', 'x.png'], /package\.json: could not decode/);
+  failing(['synth', SAMPLE, '-o', 'x.png', '--set', 'bogus=1'], /unknown option 'bogus'/);
+  failing(['synth', SAMPLE, '-o', 'x.png', '--size', 'big'], /--size must be WIDTHxHEIGHT/);
+  failing(['frobnicate'], /unknown command 'frobnicate'/);
+});
+
+const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm', '.png': 'image/png' };
+
+test('Vite: a production build of an app that imports the package runs in headless Chromium', async () => {
+  const viteApp = join(app, 'vite-app');
+  cpSync(SAMPLE, join(viteApp, 'sand_64.png'));
+  run('node', [join(ROOT, 'node_modules/vite/bin/vite.js'), 'build', '--logLevel', 'warn'], viteApp, { env: { ...process.env, NODE_PATH: '' } });
+  const dist = join(viteApp, 'dist');
+  const assets = readdirSync(join(dist, 'assets'));
+  assert.ok(assets.some((f) => f.endsWith('.wasm')), `no .wasm asset in ${assets}`);
+  const server = createServer((req, res) => {
+    const path = join(dist, req.url === '/' ? 'index.html' : decodeURIComponent(req.url.split('?')[0]));
+    try {
+      const body = readFileSync(path);
+      res.writeHead(200, { 'content-type': TYPES[extname(path)] ?? 'application/octet-stream' });
+      res.end(body);
+    } catch {
+      res.writeHead(404);
+      res.end();
+    }
+  });
+  await new Promise((r) => server.listen(0, '127.0.0.1', r));
+  const browser = await chromium.launch({
+    executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+    args: ['--no-sandbox', '--disable-gpu', '--disable-dev-shm-usage', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
+  });
+  try {
+    const page = await browser.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    await page.goto(`http://127.0.0.1:${server.address().port}/`);
+    await page.waitForSelector('body[data-result]', { timeout: 30_000 }).catch(() => assert.fail(errors.join('\n') || 'no result'));
+    const result = JSON.parse(await page.evaluate(() => document.body.dataset.result));
+    assert.deepEqual(result, { version: JSON.parse(readFileSync(join(ROOT, 'pkg.json'), 'utf8')).version, done: true, alpha: 255, workerDone: true });
+    assert.deepEqual(errors, []);
   } finally {
-    rmSync(scratch, { recursive: true, force: true });
+    await browser.close();
+    server.close();
   }
 });

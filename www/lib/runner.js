@@ -1,33 +1,50 @@
 // Drives a session from the page: Run steps once per animation frame (so each step is drawn),
-// Pause stops, Step runs exactly one. The caller owns the session; this only paces it.
+// Pause stops, Step runs exactly one. The caller owns the session; this only paces it. `step` may
+// return the event or a promise of it (a session in the worker, www/lib/worker.js): one step is
+// in flight at a time, and the main thread stays free while the worker computes.
 export class Runner {
   constructor({ step, onStep, onDone, onError }) {
     Object.assign(this, { stepFn: step, onStep, onDone, onError });
     this.running = false;
+    this.busy = null;
+    this.loop = null;
   }
 
   run() {
     if (this.running) return;
     this.running = true;
-    const tick = () => {
-      if (!this.running) return;
-      if (!this.stepOnce()) {
-        this.running = false;
+    const loop = {};
+    this.loop = loop;
+    const tick = async () => {
+      if (!this.running || this.loop !== loop) return;
+      if (!(await this.stepOnce())) {
+        if (this.loop === loop) this.running = false;
         return;
       }
-      requestAnimationFrame(tick);
+      if (this.running && this.loop === loop) requestAnimationFrame(tick);
     };
     requestAnimationFrame(tick);
   }
 
   pause() {
     this.running = false;
+    this.loop = null;
   }
 
-  /** Runs one step; returns false when the session is finished or failed. */
-  stepOnce() {
+  /** Runs one step; resolves to false when the session is finished or failed. */
+  async stepOnce() {
+    if (this.busy) return this.busy; // a step is in flight: this one is the same step
+    this.busy = this.#step();
     try {
-      const event = this.stepFn();
+      return await this.busy;
+    } finally {
+      this.busy = null;
+    }
+  }
+
+  async #step() {
+    try {
+      const event = await this.stepFn();
       if (!event) return false;
       this.onStep(event);
       if (event.done) {

@@ -3,9 +3,10 @@
 // frame being made; the side shows the finished frames playing in a loop, the naive warp of the
 // first frame for comparison (the paper's Fig. 7), the flow as arrows, and the per-frame
 // energies. "Record WebM" plays the finished frames through the browser's MediaRecorder.
-import { FlowAnimation, flowField } from '../pkg/texsynth.js';
+import { flowField } from '../pkg/texsynth.js';
 import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
+import { remoteSession } from '../lib/worker.js';
 import { recordFrames } from '../lib/record.js';
 
 export const id = 'flow';
@@ -52,7 +53,9 @@ const SIDE_HTML = `
 
 /** Creates the panel. `ui` gives the shared controls, canvas and exemplar. */
 export function createPanel(ui) {
+  // The animation runs in the page's worker (www/lib/worker.js); `session` is its mirror.
   let session = null;
+  let pending = null;
   let frames = [];
   let playTimer = null;
   let playIndex = 0;
@@ -71,9 +74,24 @@ export function createPanel(ui) {
     };
   }
 
-  function ensureSession() {
-    session ??= new FlowAnimation(ui.exemplar(), options());
-    return session;
+  const VIEWS = {
+    views: ['renderInto', 'renderNaiveInto'],
+    calls: ['textureEnergyHistory', 'flowEnergyHistory'],
+    getters: ['frames'],
+  };
+
+  async function ensureSession() {
+    pending ??= remoteSession('FlowAnimation', [ui.exemplar(), options()], VIEWS);
+    const current = pending;
+    try {
+      const created = await current;
+      if (pending !== current) return null;
+      session = created;
+      return session;
+    } catch (error) {
+      if (pending === current) pending = null;
+      throw error;
+    }
   }
 
   /** The flow f_t as arrows on a grid (the field's own scale: one arrow per cell). */
@@ -112,8 +130,8 @@ export function createPanel(ui) {
   }
 
   function plot() {
-    drawLinePlot(ui.$('fl-texture'), Array.from(session?.textureEnergyHistory() ?? []), { title: 'texture energy per frame' });
-    drawLinePlot(ui.$('fl-flow-energy'), Array.from(session?.flowEnergyHistory() ?? []).slice(1), {
+    drawLinePlot(ui.$('fl-texture'), Array.from(session?.result('textureEnergyHistory') ?? []), { title: 'texture energy per frame' });
+    drawLinePlot(ui.$('fl-flow-energy'), Array.from(session?.result('flowEnergyHistory') ?? []).slice(1), {
       title: 'flow energy per frame (from frame 2)',
       color: '#6fb3d2',
     });
@@ -166,15 +184,18 @@ export function createPanel(ui) {
       clearInterval(playTimer);
       playTimer = null;
     },
-    step() {
-      return ensureSession().done ? null : session.step();
+    async step() {
+      const current = await ensureSession();
+      if (!current || current.done) return null;
+      const event = await current.step();
+      return current === session ? event : null; // reset while the step ran
     },
     onStep(event) {
       drawInto(ui.outputCanvas, session);
       drawInto(ui.$('fl-naive'), {
         width: session.width,
         height: session.height,
-        renderInto: (data) => session.renderNaiveInto(data),
+        renderInto: (data) => session.view('renderNaiveInto', data),
       });
       if (event.frameFinished) {
         if (frames.length < MAX_KEPT_FRAMES) {
@@ -188,13 +209,14 @@ export function createPanel(ui) {
       }
       const what = event.frame === 0
         ? `frame 1 (full multi-level synthesis) · iteration ${event.iteration}`
-        : `frame ${event.frame + 1}/${session.frames} · neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration}`;
+        : `frame ${event.frame + 1}/${session.getter('frames')} · neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration}`;
       ui.$('fl-readout').textContent =
         `${what} · texture energy ${event.textureEnergy.toPrecision(3)} · flow energy ${event.flowEnergy.toPrecision(3)}`;
       if (event.done) document.body.dataset.flowDone = 'true';
     },
     reset() {
-      session?.free();
+      pending?.then((s) => s.free(), () => {});
+      pending = null;
       session = null;
       frames = [];
       playIndex = 0;

@@ -1,10 +1,10 @@
 // The "Graphcut textures" panel (Kwatra et al. 2003): every patch placement is drawn as it happens,
 // with the new patch's outline, the error region, and toggles for the seams, the seam-cost heat
 // map and the label map; the total seam cost is plotted against the number of patches.
-import { GraphcutTextures } from '../pkg/texsynth.js';
 import { drawInto, drawOverlay, strokeRect } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
 import { showQuality } from '../lib/quality.js';
+import { remoteSession } from '../lib/worker.js';
 
 export const id = 'graphcut';
 export const title = 'Graphcut textures';
@@ -36,8 +36,13 @@ const SIDE_HTML = `
   <p class="quality" id="gc-quality"></p>
   <p class="legend">Outline: the patch just placed (orange) and the error region it had to cover (dashed).</p>`;
 
+// The session runs in the page's worker; these views come back with every step (the overlays only
+// while shown, all of them with the last step so that toggles after the run draw at once).
+const ALL_VIEWS = ['renderInto', 'renderSeams', 'renderSeamCost', 'renderLabels'];
+
 export function createPanel(ui) {
   let session = null;
+  let pending = null;
   let lastEvent = null;
   let costs = [];
 
@@ -65,16 +70,31 @@ export function createPanel(ui) {
       canvas.width = width;
       canvas.height = height;
       canvas.getContext('2d').clearRect(0, 0, width, height);
-      drawOverlay(canvas, width, height, (b) => session.renderLabels(b));
+      drawOverlay(canvas, width, height, (b) => session.view('renderLabels', b));
     } else {
       drawInto(canvas, session);
     }
-    if (ui.$('gc-heat').checked) drawOverlay(canvas, width, height, (b) => session.renderSeamCost(b), 0.85);
-    if (ui.$('gc-seams').checked) drawOverlay(canvas, width, height, (b) => session.renderSeams(b));
+    if (ui.$('gc-heat').checked) drawOverlay(canvas, width, height, (b) => session.view('renderSeamCost', b), 0.85);
+    if (ui.$('gc-seams').checked) drawOverlay(canvas, width, height, (b) => session.view('renderSeams', b));
     if (lastEvent?.patch && !lastEvent.done) {
       strokeRect(canvas, lastEvent.rect, width, height, '#e0a458');
       strokeRect(canvas, lastEvent.region, width, height, '#7fd1ff', [3, 2]);
     }
+  }
+
+  function wanted() {
+    const views = ['renderInto'];
+    if (ui.$('gc-seams').checked) views.push('renderSeams');
+    if (ui.$('gc-heat').checked) views.push('renderSeamCost');
+    if (ui.$('gc-labels').checked) views.push('renderLabels');
+    return { views, finalViews: ALL_VIEWS };
+  }
+
+  /** A view toggled on mid-run is fetched before it is drawn. */
+  async function redraw() {
+    const missing = wanted().views.filter((v) => !session?.has(v));
+    if (session && missing.length) await session.refresh({ views: missing });
+    draw();
   }
 
   return {
@@ -83,11 +103,23 @@ export function createPanel(ui) {
     optionsHtml: OPTIONS_HTML,
     sideHtml: SIDE_HTML,
     mount() {
-      for (const id of ['gc-seams', 'gc-heat', 'gc-labels']) ui.$(id).addEventListener('change', draw);
+      for (const id of ['gc-seams', 'gc-heat', 'gc-labels']) ui.$(id).addEventListener('change', redraw);
     },
-    step() {
-      session ??= new GraphcutTextures(ui.exemplar(), options());
-      return session.done ? null : session.step();
+    async step() {
+      pending ??= remoteSession('GraphcutTextures', [ui.exemplar(), options()], wanted);
+      const current = pending;
+      let created;
+      try {
+        created = await current;
+      } catch (error) {
+        if (pending === current) pending = null;
+        throw error;
+      }
+      if (pending !== current) return null; // reset while the session was being made
+      session = created;
+      if (session.done) return null;
+      const event = await session.step();
+      return pending === current ? event : null; // reset while the step ran
     },
     onStep(event) {
       lastEvent = event;
@@ -100,12 +132,14 @@ export function createPanel(ui) {
         `total seam cost ${event.totalSeamCost.toFixed(1)} · ${event.covered ? 'covered' : 'covering…'}`;
       document.body.dataset.patches = String(event.patchesPlaced);
       if (event.done) {
-        showQuality(ui.$('gc-quality'), ui.exemplar(), session);
-        document.body.dataset.graphcutDone = 'true';
+        showQuality(ui.$('gc-quality'), ui.exemplar(), session).then(() => {
+          document.body.dataset.graphcutDone = 'true';
+        });
       }
     },
     reset() {
-      session?.free();
+      pending?.then((s) => s.free(), () => {});
+      pending = null;
       session = null;
       lastEvent = null;
       costs = [];

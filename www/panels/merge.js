@@ -1,9 +1,10 @@
 // The "Graph-cut merge" panel (Kwatra et al. 2003, section 6.B): the exemplar and a second image
 // overlap; paint which pixels must come from which image, then watch the graph cut lay the
 // second image over the first along the cheapest seam that honours the paint.
-import { Exemplar, GraphcutMerge } from '../pkg/texsynth.js';
+import { Exemplar } from '../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../lib/canvas.js';
 import { SAMPLES } from '../lib/samples.js';
+import { remoteSession } from '../lib/worker.js';
 
 export const id = 'merge';
 export const title = 'Graph-cut merge';
@@ -11,7 +12,8 @@ export const title = 'Graph-cut merge';
 const PAINT = [null, [80, 170, 255, 150], [255, 120, 60, 150]];
 
 export function createPanel(ui) {
-  let merge = null;
+  let merge = null; // the mirror of the merge in the page's worker
+  let pending = null;
   let second = null;
   let mask = null;
   let layout = null;
@@ -48,13 +50,28 @@ export function createPanel(ui) {
     }
   }
 
-  function build() {
+  /** Frees the merge in the worker (after whatever step is in flight) and forgets it. */
+  function drop() {
+    pending?.then((m) => m.free(), () => {});
+    pending = null;
+    merge = null;
+  }
+
+  /** Makes the merge in the page's worker (www/lib/worker.js); `merge` is its mirror. */
+  async function build() {
     computeLayout();
-    merge?.free();
-    merge = new GraphcutMerge(layout.width, layout.height, true);
-    merge.addSource(ui.exemplar(), 0, 0);
-    merge.addSource(second, layout.offset, 0);
-    merge.setConstraints(mask);
+    drop();
+    const current = (pending = (async () => {
+      const made = await remoteSession('GraphcutMerge', [layout.width, layout.height, true], { views: ['renderInto', 'renderSeams'] });
+      await made.send('addSource', { exemplar: ui.exemplar() }, 0, 0);
+      await made.send('addSource', { exemplar: second }, layout.offset, 0);
+      await made.send('setConstraints', mask);
+      return made;
+    })());
+    const made = await current;
+    if (pending !== current) return null;
+    merge = made;
+    return merge;
   }
 
   function draw() {
@@ -66,7 +83,7 @@ export function createPanel(ui) {
     ctx.clearRect(0, 0, layout.width, layout.height);
     if (merge && merge.done) {
       drawInto(canvas, merge);
-      drawOverlay(canvas, layout.width, layout.height, (b) => merge.renderSeams(b));
+      drawOverlay(canvas, layout.width, layout.height, (b) => merge.view('renderSeams', b));
     } else {
       // Preview: both sources where they are placed, the second half-transparent.
       for (const [source, x, alpha] of [[ui.exemplar(), 0, 1], [second, layout.offset, 0.55]]) {
@@ -98,8 +115,7 @@ export function createPanel(ui) {
       }
     }
     // New paint means a new merge: the old result no longer honours it.
-    merge?.free();
-    merge = null;
+    drop();
     delete document.body.dataset.mergeDone;
     draw();
   }
@@ -118,7 +134,7 @@ export function createPanel(ui) {
       canvas.onpointerdown = (e) => { painting = true; paintAt(e); };
       canvas.onpointermove = (e) => painting && paintAt(e);
       window.addEventListener('pointerup', () => { painting = false; });
-      ui.$('mg-clear').addEventListener('click', () => { mask?.fill(0); merge?.free(); merge = null; draw(); });
+      ui.$('mg-clear').addEventListener('click', () => { mask?.fill(0); drop(); draw(); });
       ui.$('mg-second').addEventListener('change', async () => { await loadSecond(); layout = null; this.reset(); });
       loadSecond().then(() => this.reset());
     },
@@ -126,10 +142,12 @@ export function createPanel(ui) {
       const canvas = ui.outputCanvas;
       canvas.onpointerdown = canvas.onpointermove = null;
     },
-    step() {
+    async step() {
       if (!second) return null;
-      if (!merge) build();
-      return merge.done ? null : merge.step();
+      const current = merge ?? (await build());
+      if (!current || current.done) return null;
+      const event = await current.step();
+      return current === merge ? event : null; // repainted or reset while the step ran
     },
     onStep(event) {
       draw();
@@ -139,8 +157,7 @@ export function createPanel(ui) {
       if (event.done) document.body.dataset.mergeDone = 'true';
     },
     reset() {
-      merge?.free();
-      merge = null;
+      drop();
       delete document.body.dataset.mergeDone;
       if (second && ui.exemplar()) {
         computeLayout();

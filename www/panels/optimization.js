@@ -2,10 +2,10 @@
 // happens, with the energy plot of the paper's Fig. 3 and a teaching view of the neighbourhood
 // grid and the chosen exemplar positions. With "paint constraints" on, colour strokes painted on
 // the output become soft constraints (section 4) and the synthesis runs on to follow them.
-import { TextureOptimization } from '../pkg/texsynth.js';
 import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
 import { showQuality } from '../lib/quality.js';
+import { remoteSession } from '../lib/worker.js';
 
 export const id = 'optimization';
 export const title = 'Texture optimization';
@@ -36,7 +36,10 @@ const SIDE_HTML = `
 
 /** Creates the panel. `ui` gives the shared controls, canvas and exemplar. */
 export function createPanel(ui) {
+  // The session runs in the page's worker (www/lib/worker.js); `session` is its mirror, which holds
+  // the views of the last step. `pending` is the promise of it while it is being made.
   let session = null;
+  let pending = null;
   let offsetImage = null;
   // The painted constraints: colours with alpha as the mask, at output size.
   let paint = null;
@@ -55,23 +58,57 @@ export function createPanel(ui) {
     };
   }
 
-  function ensureSession() {
-    if (!session) {
-      session = new TextureOptimization(ui.exemplar(), options());
-      const plan = session.schedule().map((l) => `1/${l.scale}·${l.neighbourhoodSize}`).join(' → ');
+  /** What every step brings back from the worker: the teaching view only while it is shown. */
+  function wanted() {
+    const teaching = ui.$('to-teaching').checked;
+    return {
+      views: teaching ? ['renderInto', 'renderOffsetMap'] : ['renderInto'],
+      calls: teaching ? ['energyHistory', 'historyLevels', 'field'] : ['energyHistory', 'historyLevels'],
+      getters: ['constraintEnergy'],
+      finalViews: ['renderInto', 'renderOffsetMap'],
+      finalCalls: ['energyHistory', 'historyLevels', 'field'],
+    };
+  }
+
+  async function ensureSession() {
+    if (!pending) {
+      pending = remoteSession('TextureOptimization', [ui.exemplar(), options()], wanted);
+      const current = pending;
+      let created;
+      try {
+        created = await current;
+        created.schedulePlan = await created.send('schedule');
+      } catch (error) {
+        if (pending === current) pending = null;
+        throw error;
+      }
+      if (pending !== current) return null;
+      session = created;
+      const plan = session.schedulePlan.map((l) => `1/${l.scale}·${l.neighbourhoodSize}`).join(' → ');
       ui.$('to-legend').textContent = `schedule: ${plan}`;
     }
-    return session;
+    const current = pending;
+    const created = await current;
+    return pending === current ? created : null;
+  }
+
+  /** The teaching view toggled on mid-run: fetch it, then draw. */
+  async function redraw() {
+    if (session && ui.$('to-teaching').checked && !session.has('field')) {
+      await session.refresh({ views: ['renderOffsetMap'], calls: ['field'] });
+    }
+    draw();
   }
 
   function draw() {
     if (!session) return;
     const canvas = ui.outputCanvas;
-    if (ui.$('to-teaching').checked && session.field()) {
+    const field = session.result('field');
+    if (ui.$('to-teaching').checked && field) {
       // The offset map, scaled up without smoothing so the grid can be drawn finer than a pixel.
       offsetImage = offsetImage?.width === session.width && offsetImage.height === session.height
         ? offsetImage : new ImageData(session.width, session.height);
-      session.renderOffsetMap(offsetImage.data);
+      session.view('renderOffsetMap', offsetImage.data);
       const zoom = Math.max(1, Math.floor(512 / Math.max(session.width, session.height)));
       const source = document.createElement('canvas');
       source.width = session.width;
@@ -82,7 +119,7 @@ export function createPanel(ui) {
       const ctx = canvas.getContext('2d');
       ctx.imageSmoothingEnabled = false;
       ctx.drawImage(source, 0, 0, canvas.width, canvas.height);
-      drawGrid(canvas, session.field());
+      drawGrid(canvas, field);
     } else {
       drawInto(canvas, session);
     }
@@ -128,15 +165,26 @@ export function createPanel(ui) {
   function applyPaint() {
     if (!session || !paint) return;
     const data = paint.getContext('2d').getImageData(0, 0, paint.width, paint.height).data;
-    session.setConstraints(new Uint8Array(data.buffer), Number(ui.$('to-lambda').value));
-    document.body.dataset.constraintsSet = String(Number(document.body.dataset.constraintsSet ?? 0) + 1);
-    ui.run();
+    // Sent to the worker in order with the steps; a bad lambda comes back as an error.
+    // The refresh brings back `done`, which a finished run's constraints turn false again.
+    const current = session;
+    current.send('setConstraints', new Uint8Array(data.buffer), Number(ui.$('to-lambda').value))
+      .then(() => current.refresh({ getters: ['constraintEnergy'] }))
+      .then(
+      () => {
+        document.body.dataset.constraintsSet = String(Number(document.body.dataset.constraintsSet ?? 0) + 1);
+        ui.run();
+      },
+      (error) => {
+        ui.$('to-readout').textContent = error.message;
+      },
+    );
   }
 
   function plot() {
-    const values = Array.from(session.energyHistory());
-    const levels = session.historyLevels();
-    const schedule = session.schedule();
+    const values = Array.from(session.result('energyHistory') ?? []);
+    const levels = session.result('historyLevels') ?? [];
+    const schedule = session.schedulePlan;
     const markers = [];
     levels.forEach((level, i) => {
       if (i === 0 || levels[i - 1] !== level) {
@@ -153,7 +201,7 @@ export function createPanel(ui) {
     optionsHtml: OPTIONS_HTML,
     sideHtml: SIDE_HTML,
     mount() {
-      ui.$('to-teaching').addEventListener('change', draw);
+      ui.$('to-teaching').addEventListener('change', redraw);
       const canvas = ui.outputCanvas;
       canvas.onpointerdown = (e) => {
         painting = ui.$('to-paint').checked && !!session;
@@ -172,35 +220,37 @@ export function createPanel(ui) {
       window.addEventListener('pointerup', this.onPointerUp);
       ui.$('to-clear-paint').addEventListener('click', () => {
         paint = null;
-        if (session?.constraintEnergy !== undefined) {
-          session.clearConstraints();
-          draw();
-        }
+        if (session) session.send('clearConstraints').then(() => session?.refresh()).then(draw);
       });
     },
     unmount() {
       ui.outputCanvas.onpointerdown = ui.outputCanvas.onpointermove = null;
       window.removeEventListener('pointerup', this.onPointerUp);
     },
-    step() {
-      return ensureSession().done ? null : session.step();
+    async step() {
+      const current = await ensureSession();
+      if (!current || current.done) return null;
+      const event = await current.step();
+      return current === session ? event : null; // reset while the step ran
     },
     onStep(event) {
       draw();
       plot();
-      const constraint = paint ? ` · constraint error ${session.constraintEnergy.toPrecision(3)}` : '';
+      const constraint = paint ? ` · constraint error ${session.getter('constraintEnergy').toPrecision(3)}` : '';
       ui.$('to-readout').textContent =
         `level ${event.level + 1}/${event.levelCount} · resolution 1/${event.scale} · ` +
         `neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration} · ` +
         `energy ${event.energy.toPrecision(4)} · ${event.changed} matches changed${constraint}`;
       document.body.dataset.iterations = String(event.totalIterations);
       if (event.done) {
-        showQuality(ui.$('to-quality'), ui.exemplar(), session);
-        document.body.dataset.optimizationDone = 'true';
+        showQuality(ui.$('to-quality'), ui.exemplar(), session).then(() => {
+          document.body.dataset.optimizationDone = 'true';
+        });
       }
     },
     reset() {
-      session?.free();
+      pending?.then((s) => s.free(), () => {});
+      pending = null;
       session = null;
       paint = null;
       delete document.body.dataset.optimizationDone;

@@ -2,7 +2,8 @@
 // are two layers, each with its own global deformation; a layout says which output pixel takes
 // which layer; patches are chosen by the quadtree-pyramid search (or the exhaustive one, to
 // compare) and stitched along minimum-cut seams, one row of patches per step.
-import { LayerDesign } from '../../pkg/texsynth.js';
+import { Exemplar } from '../../pkg/texsynth.js';
+import { remoteSession } from '../../lib/worker.js';
 import { drawInto } from '../../lib/canvas.js';
 
 export const id = 'layers';
@@ -24,28 +25,37 @@ function layout(kind, w, h) {
 }
 
 export function createStage({ ui, gallery, readout }) {
+  // The design runs in the page's worker (www/lib/worker.js); `design` is its mirror.
   let design = null;
+  let generation = 0;
   let started = 0;
 
-  function build() {
+  function drop() {
+    generation++;
+    design?.free();
+    design = null;
+  }
+
+  async function build() {
     const w = ui.outputWidth();
     const h = ui.outputHeight();
-    design = new LayerDesign({
+    const made = await remoteSession('LayerDesign', [{
       outputWidth: w,
       outputHeight: h,
       patchSize: Number(ui.$('dl-patch').value),
       search: ui.$('dl-search').value,
       placement: ui.$('dl-placement').value,
       seed: ui.seed(),
-    });
+    }], { views: ['renderInto'] });
     const kind = ui.$('dl-layout').value;
     const rotate = Number(ui.$('dl-rotate').value);
-    design.addLayer(gallery.baseItem.exemplar, undefined);
+    await made.send('addLayer', { exemplar: gallery.baseItem.exemplar }, undefined);
     if (kind !== 'one') {
-      design.addLayer(gallery.referenceItem.exemplar, rotate ? { rotate } : undefined);
-      design.setLayout(layout(kind, w, h));
+      await made.send('addLayer', { exemplar: gallery.referenceItem.exemplar }, rotate ? { rotate } : undefined);
+      await made.send('setLayout', layout(kind, w, h));
     }
     started = performance.now();
+    return made;
   }
 
   return {
@@ -65,13 +75,22 @@ export function createStage({ ui, gallery, readout }) {
       this.reset();
     },
     unmount() {
-      design?.free();
-      design = null;
+      drop();
     },
-    step() {
+    async step() {
       if (!gallery.baseItem) return null;
-      if (!design) build();
-      return design.done ? null : design.step();
+      const mine = generation;
+      if (!design) {
+        const made = await build();
+        if (mine !== generation) {
+          made.free();
+          return null;
+        }
+        design = made;
+      }
+      if (design.done) return null;
+      const event = await design.step();
+      return mine === generation ? event : null;
     },
     onStep(event) {
       drawInto(ui.outputCanvas, design);
@@ -79,13 +98,16 @@ export function createStage({ ui, gallery, readout }) {
       readout(`row ${event.row + 1}/${event.rows} · ${event.patches}/${event.totalPatches} patches · ` +
         `${(event.pixelsCompared / 1e6).toFixed(2)} M pixel differences · boundary SSD ${event.totalSsd.toFixed(1)} · ${ms.toFixed(0)} ms`);
       if (event.done) {
-        gallery.add(`S2 · ${ui.$('dl-layout').value} · ${ui.$('dl-search').value}`, design.toExemplar());
-        document.body.dataset.layersDone = 'true';
+        // The worker sends the design as PNG (its channels kept) for the gallery.
+        const label = `S2 · ${ui.$('dl-layout').value} · ${ui.$('dl-search').value}`;
+        design.send('toExemplar').then((made) => {
+          gallery.add(label, Exemplar.fromBytes(made.png));
+          document.body.dataset.layersDone = 'true';
+        }, () => {});
       }
     },
     reset() {
-      design?.free();
-      design = null;
+      drop();
       delete document.body.dataset.layersDone;
       if (gallery.baseItem) drawInto(ui.outputCanvas, gallery.baseItem.exemplar);
     },

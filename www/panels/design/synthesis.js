@@ -2,10 +2,10 @@
 // texture-optimization EM, its M-step distance on pixels or extended by Haar or Daubechies
 // wavelet coefficients (eq. 4). "Compare" runs all three on the same base and seed and plots
 // their energies together, as in Fig. 5.
-import { TextureOptimization } from '../../pkg/texsynth.js';
 import { drawInto } from '../../lib/canvas.js';
 import { drawLinePlots } from '../../lib/plot.js';
 import { showQuality } from '../../lib/quality.js';
+import { remoteSession } from '../../lib/worker.js';
 
 export const id = 'synthesis';
 export const title = 'Synthesise';
@@ -13,23 +13,30 @@ export const title = 'Synthesise';
 const COLORS = { pixels: '#e0a458', haar: '#6fb3ff', daubechies: '#8fd18a' };
 
 export function createStage({ ui, gallery, readout }) {
+  // The session runs in the page's worker (www/lib/worker.js); `session` is its mirror.
+  // `generation` changes on reset, so a step that was in flight then is dropped.
   let session = null;
+  let generation = 0;
   let queue = [];
   let current = null;
   let base = null;
   const energies = {};
 
-  function start(energy) {
+  async function start(energy) {
     session?.free();
+    session = null;
     current = energy;
     energies[energy] = [];
     base = gallery.baseItem;
-    session = new TextureOptimization(base.exemplar, {
-      outputWidth: ui.outputWidth(),
-      outputHeight: ui.outputHeight(),
-      seed: ui.seed(),
-      energy,
-    });
+    const options = { outputWidth: ui.outputWidth(), outputHeight: ui.outputHeight(), seed: ui.seed(), energy };
+    const made = await remoteSession('TextureOptimization', [base.exemplar, options], { views: ['renderInto'] });
+    session = made;
+  }
+
+  function drop() {
+    generation++;
+    session?.free();
+    session = null;
   }
 
   function plot() {
@@ -54,17 +61,19 @@ export function createStage({ ui, gallery, readout }) {
       this.reset();
     },
     unmount() {
-      session?.free();
-      session = null;
+      drop();
     },
-    step() {
+    async step() {
       if (!gallery.baseItem) return null;
+      const mine = generation;
       if (!session) {
         if (queue.length === 0) return null;
-        start(queue.shift());
+        await start(queue.shift());
+        if (mine !== generation) return null;
       }
       if (session.done) return null;
-      const event = session.step();
+      const event = await session.step();
+      if (mine !== generation) return null;
       // The run goes on with the next energy when one finishes; the page's done means all ran.
       return { ...event, energyKind: current, done: event.done && queue.length === 0 };
     },
@@ -75,7 +84,8 @@ export function createStage({ ui, gallery, readout }) {
       readout(`${event.energyKind}: level ${event.level + 1}/${event.levelCount} · neighbourhood ` +
         `${event.neighbourhoodSize} · iteration ${event.iteration} · energy ${event.energy.toPrecision(4)}`);
       if (session.done) {
-        showQuality(ui.$('dsy-quality'), base.exemplar, session);
+        const last = queue.length === 0;
+        const quality = showQuality(ui.$('dsy-quality'), base.exemplar, session);
         const image = new ImageData(session.width, session.height);
         session.renderInto(image.data);
         gallery.add(`S1 · ${event.energyKind}`, gallery.copy({
@@ -83,12 +93,11 @@ export function createStage({ ui, gallery, readout }) {
         }));
         session.free();
         session = null;
-        if (queue.length === 0) document.body.dataset.synthesisDone = 'true';
+        if (last) quality.then(() => { document.body.dataset.synthesisDone = 'true'; });
       }
     },
     reset() {
-      session?.free();
-      session = null;
+      drop();
       for (const k of Object.keys(energies)) delete energies[k];
       queue = ui.$('dsy-compare')?.checked ? ['pixels', 'haar', 'daubechies'] : [ui.$('dsy-energy-kind')?.value ?? 'pixels'];
       delete document.body.dataset.synthesisDone;

@@ -1,8 +1,9 @@
 // Cyclic textures (Shen et al. 2009, section 4): the base is cut open along its most seamless
 // line, its old edges are stitched by graph cuts, horizontally then vertically, and the result
 // is previewed tiled 3x3. One stitch (one graph cut) per step.
-import { TileableSession } from '../../pkg/texsynth.js';
+import { Exemplar } from '../../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../../lib/canvas.js';
+import { remoteSession } from '../../lib/worker.js';
 
 export const id = 'tileable';
 export const title = 'Make tileable';
@@ -30,15 +31,25 @@ export function createStage({ ui, gallery, readout }) {
     }
   }
 
+  // The stitching runs in the page's worker (www/lib/worker.js); `session` is its mirror, and the
+  // last step brings the result back with it.
   let session = null;
+  let generation = 0;
   let started = 0;
 
-  function begin() {
+  function drop() {
+    generation++;
     session?.free();
+    session = null;
+  }
+
+  async function begin() {
+    drop();
     result = null;
     const overlap = Number(ui.$('dt-overlap').value);
-    session = new TileableSession(gallery.baseItem.exemplar, overlap > 0 ? { overlapX: overlap, overlapY: overlap } : undefined);
+    const options = overlap > 0 ? { overlapX: overlap, overlapY: overlap } : undefined;
     started = performance.now();
+    return remoteSession('TileableSession', [gallery.baseItem.exemplar, options], { views: ['renderInto'], finalCalls: ['result'] });
   }
 
   return {
@@ -57,10 +68,22 @@ export function createStage({ ui, gallery, readout }) {
       ui.$('dt-seams').addEventListener('change', () => result && preview(result.exemplar, result.seam));
       this.reset();
     },
-    step() {
+    async step() {
       if (!gallery.baseItem) return null;
-      if (!session) begin();
-      return session.done ? null : session.step();
+      if (!session) {
+        const making = begin();
+        const mine = generation; // begin() has moved it on; a reset while making moves it again
+        const made = await making;
+        if (mine !== generation) {
+          made.free();
+          return null;
+        }
+        session = made;
+      }
+      const mine = generation;
+      if (session.done) return null;
+      const event = await session.step();
+      return mine === generation ? event : null;
     },
     onStep(event) {
       const ms = performance.now() - started;
@@ -69,7 +92,8 @@ export function createStage({ ui, gallery, readout }) {
         readout(`stitched the ${event.axis === 'x' ? 'left and right' : 'top and bottom'} edges (cut at ${event.cut}) · seam cost ${event.seamCost.toFixed(2)} · ${ms.toFixed(0)} ms`);
         return;
       }
-      result = session.result();
+      const sent = session.result('result');
+      result = { ...sent, exemplar: Exemplar.fromBytes(sent.exemplar.png) };
       preview(result.exemplar, result.seam);
       readout(`tileable ${result.exemplar.width}×${result.exemplar.height} in ${ms.toFixed(0)} ms · ` +
         `cut at column ${result.cutX}, row ${result.cutY} · seam costs ${result.seamCostX.toFixed(2)} + ${result.seamCostY.toFixed(2)}`);
@@ -77,12 +101,10 @@ export function createStage({ ui, gallery, readout }) {
       document.body.dataset.tileable = 'true';
     },
     unmount() {
-      session?.free();
-      session = null;
+      drop();
     },
     reset() {
-      session?.free();
-      session = null;
+      drop();
       result = null;
       delete document.body.dataset.tileable;
       if (gallery.baseItem) drawInto(ui.outputCanvas, gallery.baseItem.exemplar);

@@ -1,0 +1,536 @@
+// Typed declarations of texsynth-wasm (every entry point: node, browser, web). Hand-written over
+// the wasm-bindgen output (texsynth.d.ts, where options and events are `any` because the bindings
+// read plain JS objects by hand): the same classes and functions with typed option objects, typed
+// events and the iteration helpers. The test tests/e2e/npm_pack.test.mjs type-checks an example
+// that uses every export, and checks that these declarations cover every member of the generated
+// ones, so a method added in Rust and missing here fails the test.
+
+/** Anything `init()` can load the module from. */
+export type InitInput = RequestInfo | URL | Response | BufferSource | WebAssembly.Module;
+
+/**
+ * Loads the wasm module (a no-op when it is loaded: the `node` and `browser` entry points load it
+ * at import). `input`: a URL or path, a `Request`, a `Response` or a promise of one, bytes, or a
+ * `WebAssembly.Module`; default: `texsynth_bg.wasm` beside the module.
+ */
+export default function init(input?: InitInput | Promise<InitInput> | { module_or_path: InitInput | Promise<InitInput> }): Promise<unknown>;
+export { init };
+/** Synchronous load from bytes or a compiled `WebAssembly.Module`. */
+export function initSync(input: BufferSource | WebAssembly.Module | { module: BufferSource | WebAssembly.Module }): unknown;
+/** Resolves on the next turn of the event loop (what `run()` awaits between steps). */
+export function yieldToEventLoop(): Promise<void>;
+
+/**
+ * Every error the library throws is a plain JS `Error` whose message names the problem (the
+ * option, the value, the size): invalid options, undecodable bytes, wrong buffer lengths.
+ * `run()` rejects with the `AbortSignal`'s reason (a `DOMException` named 'AbortError' by default).
+ */
+export type TexsynthError = Error;
+
+/** Pixels to write into: `width * height * 4` RGBA8 bytes, e.g. `ImageData.data`. */
+export type RgbaTarget = Uint8ClampedArray;
+type Bytes = Uint8Array | Uint8ClampedArray | number[];
+
+/** Options of `run()`. */
+export interface RunOptions<E> {
+  /** Aborting it stops the run before the next step; `run` rejects with `signal.reason`. */
+  signal?: AbortSignal;
+  /** Called after every step with the event and the session. */
+  onEvent?: (event: E, session: any) => void;
+  /** Stop after this many steps (default: until done). */
+  maxSteps?: number;
+}
+
+/** What every step-driven session has: `for (const event of session)` and `await session.run()`. */
+export interface Steppable<E extends { done: boolean }> extends Iterable<E> {
+  step(): E;
+  readonly done: boolean;
+  /**
+   * Steps until done, yielding to the event loop between steps; resolves with the last event
+   * (null when there was no step to make).
+   * @throws the signal's reason when `signal` is aborted.
+   */
+  run(options?: RunOptions<E>): Promise<E | null>;
+}
+
+/** An example texture, decoded and held in wasm memory. */
+export class Exemplar {
+  private constructor();
+  free(): void;
+  [Symbol.dispose](): void;
+  /** Decodes PNG or JPEG bytes. @throws {TexsynthError} empty or undecodable bytes, too large images. */
+  static fromBytes(bytes: Bytes): Exemplar;
+  /** Takes the pixels of a canvas `ImageData` (or any `{ data, width, height }` object). */
+  static fromImageData(imageData: { data: Bytes; width: number; height: number }): Exemplar;
+  /** Takes raw RGBA8 pixels, `width * height * 4` bytes. */
+  static fromRgba(rgba: Bytes, width: number, height: number): Exemplar;
+  /** Writes the exemplar as RGBA8 into `target` (length `width * height * 4`). */
+  renderInto(target: RgbaTarget): void;
+  /** The exemplar encoded as PNG. */
+  toPng(): Uint8Array;
+  /** The exemplar as a new RGBA8 array. */
+  toRgba(): Uint8ClampedArray;
+  /** 1 (grey), 2 (grey + alpha), 3 (RGB) or 4 (RGBA). */
+  readonly channels: number;
+  readonly width: number;
+  readonly height: number;
+}
+
+// ---------------------------------------------------------------- texture optimization
+
+/** Nearest-neighbour search of the M-step. */
+export type Search = 'patchmatch' | 'kmeans-tree' | 'exact';
+
+/** Options of `TextureOptimization` (Kwatra et al. 2005). Unknown keys and impossible values throw. */
+export interface TextureOptimizationOptions {
+  /** Output width in pixels. Default: 256. */
+  outputWidth?: number;
+  /** Output height in pixels. Default: 256. */
+  outputHeight?: number;
+  /** Random seed; same seed, options and input give the same output. Default: 1. */
+  seed?: number;
+  /** Resolution levels (octaves) of the schedule. Default: 3. */
+  levels?: number;
+  /** Neighbourhood sizes, largest first; sizes that do not fit a level's exemplar are skipped. Default: [32, 16, 8]. */
+  neighbourhoodSizes?: number[];
+  /** EM iterations per level and size at most (a level also ends when no match changes). Default: 5. */
+  iterations?: number;
+  /** Robust IRLS exponent (2 is least squares). Default: 0.8 (the paper's). */
+  r?: number;
+  /** Weight of the gradient energy (the paper uses 10). Default: 0 (off). */
+  mu?: number;
+  /** Nearest-neighbour search. Default: 'patchmatch'. */
+  search?: Search;
+  /** Make the output tile seamlessly. Default: false. */
+  tileable?: boolean;
+  /** Weight of the occurrence penalty that makes the output use all of the exemplar (0: the paper's M-step). Default: 1. */
+  completeness?: number;
+  /** How far the output's colour histogram is matched to the exemplar's (0..1). Default: 1. */
+  histogramMatching?: number;
+  /** Texture energy: pixels, or the wavelet energy of Shen et al. 2009. Default: 'pixels'. */
+  energy?: 'pixels' | 'haar' | 'daubechies';
+  /** Weight of the wavelet detail bands (with a wavelet `energy`). Default: 4. */
+  waveletDetailWeight?: number;
+}
+
+/** What one `TextureOptimization.step()` did. */
+export interface TextureOptimizationEvent {
+  kind: 'level' | 'iteration' | 'done';
+  done: boolean;
+  level: number;
+  levelCount: number;
+  octave: number;
+  /** 2^octave: the level is 1/scale of the output size. */
+  scale: number;
+  neighbourhoodSize: number;
+  iteration: number;
+  /** The pixel term ||x_p - z_p||^r, normalised, whatever the `energy` option. */
+  energy: number;
+  /** What the M-step minimised (equal to `energy` for 'pixels'). */
+  matchEnergy: number;
+  /** Matches that changed in this iteration. */
+  changed: number;
+  totalIterations: number;
+  /** Conjugate-gradient iterations of the gradient solve. */
+  solverIterations: number;
+}
+
+/** One planned level of a `TextureOptimization`. */
+export interface ScheduleLevel {
+  octave: number; scale: number; neighbourhoodSize: number; spacing: number;
+  outputWidth: number; outputHeight: number; exemplarWidth: number; exemplarHeight: number;
+}
+
+/** The neighbourhood grid X† of the level last iterated and the chosen exemplar corners z_p. */
+export interface NeighbourhoodField {
+  columns: number[] | Uint32Array; rows: number[] | Uint32Array; neighbourhoodSize: number;
+  levelWidth: number; levelHeight: number; exemplarWidth: number; exemplarHeight: number;
+  /** x, y pairs, row by row. */
+  matches: number[] | Uint32Array | Int32Array;
+}
+
+/** A texture-optimisation run (Kwatra et al. 2005) you advance with `step()`. */
+export class TextureOptimization implements Steppable<TextureOptimizationEvent> {
+  /** @throws {TexsynthError} unknown option keys, impossible values (named in the message). */
+  constructor(exemplar: Exemplar, options?: TextureOptimizationOptions);
+  free(): void;
+  [Symbol.dispose](): void;
+  [Symbol.iterator](): Iterator<TextureOptimizationEvent>;
+  run(options?: RunOptions<TextureOptimizationEvent>): Promise<TextureOptimizationEvent | null>;
+  /** Runs one EM iteration. */
+  step(): TextureOptimizationEvent;
+  /** Writes the current output as RGBA8 into `target` (`width * height * 4` long). */
+  renderInto(target: RgbaTarget): void;
+  /** The colour-coded offset map (red = exemplar x, green = exemplar y). */
+  renderOffsetMap(target: RgbaTarget): void;
+  /** Normalised energy after every iteration so far. */
+  energyHistory(): Float64Array;
+  /** The level index of every point of `energyHistory()`. */
+  historyLevels(): Uint32Array;
+  /** The planned levels, coarsest first. */
+  schedule(): ScheduleLevel[];
+  /** The neighbourhood grid of the level last iterated; null before the first step. */
+  field(): NeighbourhoodField | null;
+  /**
+   * Soft constraints (section 4): RGBA desired colours at output size whose alpha is the mask;
+   * `lambda` (0 to 1e6) relative to the texture (1 = half way).
+   */
+  setConstraints(rgba: Bytes, lambda: number): void;
+  /** Removes the soft constraints. */
+  clearConstraints(): void;
+  /** Mean squared difference to the constraint colours over the masked pixels (0 without). */
+  readonly constraintEnergy: number;
+  readonly done: boolean;
+  readonly energy: 'pixels' | 'haar' | 'daubechies';
+  readonly search: Search;
+  readonly width: number;
+  readonly height: number;
+}
+
+// ---------------------------------------------------------------- graph-cut textures
+
+/** Options of `GraphcutTextures` (Kwatra et al. 2003). Unknown keys and impossible values throw. */
+export interface GraphcutTexturesOptions {
+  /** Default: 256. */
+  outputWidth?: number;
+  /** Default: 256. */
+  outputHeight?: number;
+  /** Default: 1. */
+  seed?: number;
+  /** Patch placement (section 3.2). Default: 'random'. */
+  placement?: 'random' | 'entire-patch' | 'sub-patch';
+  /** Offsets are drawn with probability exp(-C / (k sigma^2)). Default: 0.01. */
+  k?: number;
+  /** Side of the error region in pixels; 0 is a third of the exemplar's side. Default: 0. */
+  errorRegion?: number;
+  /** Patches placed after the output is covered. Default: 24. */
+  refinementPatches?: number;
+  /** Seam cost M' of eq. 5 (favours edges) instead of M of eq. 1. Default: false. */
+  gradientCost?: boolean;
+  /** Blending across seams. Default: 'none'. */
+  blend?: 'none' | 'feather' | 'spline';
+  /** Also take patches from the exemplar rotated by 90, 180, 270 degrees. Default: false. */
+  rotate?: boolean;
+  /** Also take patches from the mirrored exemplar. Default: false. */
+  mirror?: boolean;
+  /** Also take patches from the exemplar scaled by these factors. Default: []. */
+  scales?: number[];
+  /** With scales: smaller scales towards the top. Default: false. */
+  perspective?: boolean;
+  /** Make the output tile seamlessly. Default: false. */
+  tileable?: boolean;
+}
+
+export interface Rect { x: number; y: number; width: number; height: number }
+
+/** What one `GraphcutTextures.step()` did. */
+export interface GraphcutTexturesEvent {
+  kind: 'placed' | 'done';
+  done: boolean;
+  patch: { source: number; offsetX: number; offsetY: number } | null;
+  rect: Rect | null;
+  region: Rect | null;
+  pixelsTaken: number;
+  cutCost: number;
+  /** Whether every output pixel has been covered. */
+  covered: boolean;
+  totalSeamCost: number;
+  patchesPlaced: number;
+}
+
+/** A graph-cut texture synthesis (Kwatra et al. 2003) you advance with `step()`. */
+export class GraphcutTextures implements Steppable<GraphcutTexturesEvent> {
+  /** @throws {TexsynthError} unknown option keys, impossible values. */
+  constructor(exemplar: Exemplar, options?: GraphcutTexturesOptions);
+  free(): void;
+  [Symbol.dispose](): void;
+  [Symbol.iterator](): Iterator<GraphcutTexturesEvent>;
+  run(options?: RunOptions<GraphcutTexturesEvent>): Promise<GraphcutTexturesEvent | null>;
+  /** Places one patch. */
+  step(): GraphcutTexturesEvent;
+  renderInto(target: RgbaTarget): void;
+  /** The label map: every patch in its own colour. */
+  renderLabels(target: RgbaTarget): void;
+  /** The per-pixel seam cost as a heat map. */
+  renderSeamCost(target: RgbaTarget): void;
+  /** Seam pixels opaque red, the rest transparent. */
+  renderSeams(target: RgbaTarget): void;
+  /** The error region of the last placement, or null. */
+  errorRegion(): Rect | null;
+  /** Names of the sources patches come from ("exemplar", "rotate 90", "scale 0.5", ...). */
+  sources(): string[];
+  readonly done: boolean;
+  readonly width: number;
+  readonly height: number;
+}
+
+/** What one `GraphcutMerge.step()` did. */
+export interface GraphcutMergeEvent {
+  kind: 'merged' | 'done';
+  done: boolean;
+  /** Index of the source laid down, or null. */
+  source: number | null;
+  cutCost: number;
+}
+
+/** Interactive merging of up to 8 sources (Kwatra et al. 2003, section 6). */
+export class GraphcutMerge implements Steppable<GraphcutMergeEvent> {
+  /** @param gradientCost seam cost M' (eq. 5). Default: true. */
+  constructor(width: number, height: number, gradientCost?: boolean | null);
+  free(): void;
+  [Symbol.dispose](): void;
+  [Symbol.iterator](): Iterator<GraphcutMergeEvent>;
+  run(options?: RunOptions<GraphcutMergeEvent>): Promise<GraphcutMergeEvent | null>;
+  /** Adds a source with its top-left corner at (x, y) of the output; returns its index. */
+  addSource(exemplar: Exemplar, x: number, y: number): number;
+  /** One byte per output pixel: 0 free, k = must come from source k - 1. */
+  setConstraints(mask: Bytes): void;
+  step(): GraphcutMergeEvent;
+  renderInto(target: RgbaTarget): void;
+  renderSeams(target: RgbaTarget): void;
+  renderSources(target: RgbaTarget): void;
+  readonly done: boolean;
+  readonly width: number;
+  readonly height: number;
+}
+
+// ---------------------------------------------------------------- flow animation
+
+export type FlowKind = 'sink' | 'source' | 'vortex' | 'shear' | 'translation';
+
+/** One flow generator. */
+export interface FlowComponent {
+  type: FlowKind;
+  /** Pixels per frame at half the frame's shorter side. Default: 1 (2 for the animation's default vortex). */
+  strength?: number;
+  /** Centre, 0..1 of the width. Default: 0.5. */
+  centerX?: number;
+  /** Centre, 0..1 of the height. Default: 0.5. */
+  centerY?: number;
+  /** Degrees (translation and shear). Default: 0. */
+  angle?: number;
+  /** Frames; the strength oscillates with this period. Default: 0 (constant). */
+  period?: number;
+  /** Degrees per frame the angle turns. Default: 0. */
+  turn?: number;
+}
+
+/** A flow: a generator, a sum of generators, one field of (vx, vy) per pixel, or one per frame (cycled). */
+export type Flow = FlowComponent | { components: FlowComponent[] } | Float32Array | Float32Array[];
+
+/** Options of `FlowAnimation` (Kwatra et al. 2005, section 4.1). */
+export interface FlowAnimationOptions {
+  /** Default: 128. */
+  outputWidth?: number;
+  /** Default: 128. */
+  outputHeight?: number;
+  /** Frames to make. Default: 60. */
+  frames?: number;
+  /** Weight of the flow (soft-constraint) energy, eq. 3. Default: 0.2. */
+  lambda?: number;
+  /** Neighbourhood sizes of the frames after the first. Default: [16, 8]. */
+  frameSizes?: number[];
+  /** Iterations per size per frame. Default: 3. */
+  frameIterations?: number;
+  /** Default: 1. */
+  seed?: number;
+  /** Default: 'patchmatch'. */
+  search?: Search;
+  /** Default: 0.8. */
+  r?: number;
+  /** Default: false. */
+  tileable?: boolean;
+  /** As for TextureOptimization. Default: 1. */
+  histogramMatching?: number;
+  /** Default: a vortex of strength 2. */
+  flow?: Flow;
+}
+
+/** What one `FlowAnimation.step()` did. */
+export interface FlowAnimationEvent {
+  kind: 'iteration' | 'frame' | 'done';
+  done: boolean;
+  /** A frame was finished by this step: `renderInto` gives it. */
+  frameFinished: boolean;
+  frame: number;
+  iteration: number;
+  neighbourhoodSize: number;
+  textureEnergy: number;
+  flowEnergy: number;
+  changed: number;
+  totalIterations: number;
+}
+
+/** A flow-guided texture animation you advance with `step()`. */
+export class FlowAnimation implements Steppable<FlowAnimationEvent> {
+  /** @throws {TexsynthError} unknown keys, bad flow fields (named by pixel or size). */
+  constructor(exemplar: Exemplar, options?: FlowAnimationOptions);
+  free(): void;
+  [Symbol.dispose](): void;
+  [Symbol.iterator](): Iterator<FlowAnimationEvent>;
+  run(options?: RunOptions<FlowAnimationEvent>): Promise<FlowAnimationEvent | null>;
+  step(): FlowAnimationEvent;
+  renderInto(target: RgbaTarget): void;
+  /** The naive baseline: frame 0 warped along the flow, no synthesis. */
+  renderNaiveInto(target: RgbaTarget): void;
+  /** The field f_t as (vx, vy) per pixel. */
+  flowField(t: number): Float32Array;
+  textureEnergyHistory(): Float64Array;
+  flowEnergyHistory(): Float64Array;
+  readonly done: boolean;
+  readonly frames: number;
+  readonly framesFinished: number;
+  readonly width: number;
+  readonly height: number;
+}
+
+/** The field f_t of a generator for a `width` x `height` frame, (vx, vy) per pixel. */
+export function flowField(flow: FlowComponent | { components: FlowComponent[] }, width: number, height: number, t: number): Float32Array;
+
+// ---------------------------------------------------------------- texture design (Shen et al. 2009)
+
+/** One global deformation (exactly one key). */
+export type Deformation =
+  | { rotate: number }
+  | { shift: [number, number] }
+  | { mirror: true }
+  | { flip: true }
+  | { scale: number };
+
+/** Applies global deformations in order. */
+export function deformTexture(exemplar: Exemplar, deformations: Deformation[]): Exemplar;
+
+export interface Range { from: number; to: number; step: number }
+/** Ranges of `deformationSet`; every key optional. */
+export interface DeformationRanges {
+  /** Degrees. */
+  rotation?: Range;
+  scale?: Range;
+  /** As a fraction of the size. */
+  shift?: Range;
+  /** Default: false. */
+  mirror?: boolean;
+  /** Default: false. */
+  flip?: boolean;
+}
+/** The set of deformed textures, at most 64. */
+export function deformationSet(exemplar: Exemplar, ranges: DeformationRanges): { label: string; exemplar: Exemplar }[];
+
+/** Options of `makeTileable` and `TileableSession`. */
+export interface TileableOptions {
+  /** Default: a sixth of the width, at most 64. */
+  overlapX?: number;
+  /** Default: a sixth of the height, at most 64. */
+  overlapY?: number;
+}
+export interface TileableResult {
+  exemplar: Exemplar; cutX: number; cutY: number; seamCostX: number; seamCostY: number;
+  /** RGBA, red on the stitches. */
+  seam: Uint8ClampedArray;
+}
+/** Makes an image cyclic in one call. */
+export function makeTileable(exemplar: Exemplar, options?: TileableOptions): TileableResult;
+
+export interface TileableEvent {
+  kind: 'stitched' | 'done'; done: boolean; axis: 'x' | 'y'; cut: number; seamCost: number;
+}
+/** Making an image cyclic one graph cut per step. */
+export class TileableSession implements Steppable<TileableEvent> {
+  constructor(exemplar: Exemplar, options?: TileableOptions);
+  free(): void;
+  [Symbol.dispose](): void;
+  [Symbol.iterator](): Iterator<TileableEvent>;
+  run(options?: RunOptions<TileableEvent>): Promise<TileableEvent | null>;
+  step(): TileableEvent;
+  renderInto(target: RgbaTarget): void;
+  /** The finished texture, as `makeTileable` returns it. */
+  result(): TileableResult;
+  readonly done: boolean;
+  readonly width: number;
+  readonly height: number;
+}
+
+/** Options of `TextureBrush` (local deformation, eqs. 1-3). */
+export interface TextureBrushOptions {
+  /** Weight of the brushed-pixel term. Default: 1000. */
+  nu?: number;
+  /** Default: 0.5. */
+  k1?: number;
+  /** Default: 0.5. */
+  k2?: number;
+  /** Pixels around the stroke the graph cut may use. Default: 12. */
+  margin?: number;
+  /** Poisson paste. Default: true. */
+  poisson?: boolean;
+}
+export interface BrushStroke {
+  x: number; y: number; width: number; height: number;
+  taken: number; energy: number; poissonIterations: number;
+}
+/** Local deformation with a brush; undoable. */
+export class TextureBrush {
+  constructor(base: Exemplar, options?: TextureBrushOptions);
+  free(): void;
+  [Symbol.dispose](): void;
+  stroke(reference: Exemplar, mask: Bytes, dx: number, dy: number): BrushStroke;
+  undo(): boolean;
+  renderInto(target: RgbaTarget): void;
+  renderLabels(target: RgbaTarget): void;
+  toExemplar(): Exemplar;
+  readonly undoDepth: number;
+  readonly width: number;
+  readonly height: number;
+}
+
+/** Options of `LayerDesign` (fast layer-based design). */
+export interface LayerDesignOptions {
+  /** Default: 360. */
+  outputWidth?: number;
+  /** Default: 360. */
+  outputHeight?: number;
+  /** 8..256. Default: 32. */
+  patchSize?: number;
+  /** 1..127. Default: a sixth of patchSize, at least 2. */
+  overlap?: number;
+  /** Default: 'qtp'. */
+  search?: 'qtp' | 'exhaustive';
+  /** Candidates kept, 1..256. Default: 32. */
+  keep?: number;
+  /** Default: 'logistic'. */
+  placement?: 'logistic' | 'random' | 'best';
+  /** Default: 0.3. */
+  tolerance?: number;
+  /** Default: 1. */
+  seed?: number;
+}
+export interface LayerDesignEvent {
+  kind: 'row' | 'done'; done: boolean; row: number; rows: number; patches: number;
+  totalPatches: number; ssd: number; totalSsd: number; positionsSearched: number; pixelsCompared: number;
+}
+export class LayerDesign implements Steppable<LayerDesignEvent> {
+  constructor(options?: LayerDesignOptions);
+  free(): void;
+  [Symbol.dispose](): void;
+  [Symbol.iterator](): Iterator<LayerDesignEvent>;
+  run(options?: RunOptions<LayerDesignEvent>): Promise<LayerDesignEvent | null>;
+  /** `deformations`: one, a list applied in order, or none (as for `deformTexture`). */
+  addLayer(exemplar: Exemplar, deformations?: Deformation | Deformation[] | null): number;
+  setLayout(layout: Bytes): void;
+  step(): LayerDesignEvent;
+  renderInto(target: RgbaTarget): void;
+  toExemplar(): Exemplar;
+  readonly done: boolean;
+  readonly width: number;
+  readonly height: number;
+}
+
+// ---------------------------------------------------------------- quality
+
+/** Quality of an output against its exemplar; lower is better for all four. */
+export interface Quality { coherence: number; completeness: number; histogram: number; flat: number }
+export function measureQuality(exemplar: Exemplar, rgba: Bytes, width: number, height: number): Quality;
+
+/** Installs the panic hook (runs by itself at load). */
+export function start(): void;
+/** The library's version. */
+export function version(): string;

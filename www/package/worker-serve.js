@@ -1,0 +1,163 @@
+// The inside of a texsynth worker (Web Worker or worker_threads): owns sessions, runs them, and
+// answers the client of worker-client.js. Messages in: { id, type, ... }; every reply carries
+// the id of the request it answers. Images travel as transferred ArrayBuffers.
+//   create { kind, args }       args: exemplars as { bytes } or { rgba, width, height }
+//   step   { render }           one step -> { event, image? }
+//   run    { render, every }    steps until done or paused; streams { type: 'event', event, image? }
+//   pause                       stops a run after the current step
+//   call   { method, args }     any session method or getter (teaching views: schedule, field, ...)
+//   render { method, width?, height? } -> { image, width, height } (renderInto, renderOffsetMap, renderSeams, ...)
+//   snapshot { views, calls, getters }   rendered views, method results and getters in one reply
+//     (step takes the same keys, plus finalViews / finalCalls wanted when that step finishes)
+//   quality                     measureQuality of the current output against the session's exemplar
+//   free
+// Any class the package exports can be made here (a session added in Rust needs nothing in this
+// file); constructor arguments of the form { bytes } or { rgba, width, height } become Exemplars.
+const isExemplarWire = (a) =>
+  a !== null && typeof a === 'object' && !ArrayBuffer.isView(a) && !Array.isArray(a) &&
+  (('bytes' in a && Object.keys(a).length === 1) || ('rgba' in a && 'width' in a && 'height' in a && Object.keys(a).length === 3));
+
+export function serve(lib, { post, listen }) {
+  const sessions = new Map();
+  const exemplars = new Map();
+  const running = new Map();
+
+  const toExemplar = (value) => {
+    if (value instanceof lib.Exemplar) return value;
+    if (value?.bytes) return lib.Exemplar.fromBytes(new Uint8Array(value.bytes));
+    if (value?.rgba) return lib.Exemplar.fromRgba(new Uint8Array(value.rgba.buffer ?? value.rgba), value.width, value.height);
+    return value;
+  };
+  // Exemplar arguments of methods (addSource, addLayer) are marked { exemplar: ... }.
+  const convertArgs = (args) => args.map((a) => (a && typeof a === 'object' && 'exemplar' in a ? toExemplar(a.exemplar) : a));
+  // Exemplars (also inside plain objects and arrays, e.g. TileableSession.result()) travel as
+  // { width, height, png }: PNG keeps the channels; Exemplar.fromBytes(png) on the other side.
+  const cloneable = (value) => {
+    if (value instanceof lib.Exemplar) {
+      const out = { width: value.width, height: value.height, png: value.toPng() };
+      value.free();
+      return out;
+    }
+    if (Array.isArray(value)) return value.map(cloneable);
+    if (value && typeof value === 'object' && Object.getPrototypeOf(value) === Object.prototype) {
+      return Object.fromEntries(Object.entries(value).map(([k, v]) => [k, cloneable(v)]));
+    }
+    return value;
+  };
+  const image = (session, method = 'renderInto', width = session.width, height = session.height) => {
+    const data = new Uint8ClampedArray(width * height * 4);
+    session[method](data);
+    return { image: data.buffer, width, height };
+  };
+  /** The views (rendered RGBA, transferred), method results and getters a mirror asked for. */
+  const snapshot = (session, { views = [], calls = [], getters = [] }) => {
+    const value = { views: {}, calls: {}, getters: { done: session.done, width: session.width, height: session.height } };
+    const transfer = [];
+    for (const view of views) {
+      const img = image(session, view);
+      value.views[view] = img;
+      transfer.push(img.image);
+    }
+    for (const call of calls) value.calls[call] = cloneable(session[call]());
+    for (const getter of getters) value.getters[getter] = session[getter];
+    return { value, transfer };
+  };
+  const reply = (id, body, transfer = []) => post({ id, ...body }, transfer);
+  const fail = (id, error) => reply(id, { type: 'error', message: error?.message ?? String(error), name: error?.name ?? 'Error' });
+  const yieldNow = () => new Promise((r) => setTimeout(r, 0));
+
+  async function run(id, sid, session, { render = 'renderInto', every = 1 } = {}) {
+    running.set(id, { session: sid, on: true });
+    let count = 0;
+    let last = null;
+    while (running.get(id)?.on && !session.done) {
+      last = session.step();
+      count++;
+      const body = { type: 'event', event: last };
+      const transfer = [];
+      if (render && (last?.done || count % every === 0)) {
+        Object.assign(body, image(session, render));
+        transfer.push(body.image);
+      }
+      reply(id, body, transfer);
+      if (last?.done) break;
+      await yieldNow(); // lets a pause message in
+    }
+    const paused = !session.done && !last?.done;
+    running.delete(id);
+    reply(id, { type: 'result', value: { paused, event: last } });
+  }
+
+  listen(async (message) => {
+    const { id, type, session: sid } = message;
+    try {
+      if (type === 'create') {
+        const Cls = lib[message.kind];
+        if (typeof Cls !== 'function' || !/^[A-Z]/.test(message.kind) || message.kind === 'Exemplar' || !Cls.prototype?.free) {
+          throw new Error(`unknown session kind '${message.kind}'`);
+        }
+        const args = message.args.map((a) => (isExemplarWire(a) ? toExemplar(a) : a));
+        const session = new Cls(...args);
+        // The exemplar stays for `quality`; the others are freed.
+        const [exemplar, ...others] = args.filter((a) => a instanceof lib.Exemplar);
+        for (const a of others) a.free();
+        if (exemplar) exemplars.set(id, exemplar);
+        sessions.set(id, session);
+        reply(id, { type: 'result', value: { session: id, width: session.width, height: session.height } });
+        return;
+      }
+      const session = sessions.get(sid);
+      if (!session) throw new Error(`no session ${sid} in this worker`);
+      if (type === 'step' && message.snapshot) {
+        const event = session.step();
+        const spec = message.snapshot;
+        const final = event?.done || session.done;
+        const snap = snapshot(session, {
+          views: final ? spec.finalViews ?? spec.views : spec.views,
+          calls: final ? spec.finalCalls ?? spec.calls : spec.calls,
+          getters: spec.getters,
+        });
+        reply(id, { type: 'result', value: { event, ...snap.value } }, snap.transfer);
+      } else if (type === 'snapshot') {
+        const snap = snapshot(session, message);
+        reply(id, { type: 'result', value: snap.value }, snap.transfer);
+      } else if (type === 'quality') {
+        const exemplar = exemplars.get(sid);
+        if (!exemplar) throw new Error('this session has no exemplar to measure against');
+        const rgba = new Uint8ClampedArray(session.width * session.height * 4);
+        session.renderInto(rgba);
+        const q = lib.measureQuality(exemplar, rgba, session.width, session.height);
+        reply(id, { type: 'result', value: { coherence: q.coherence, completeness: q.completeness, histogram: q.histogram, flat: q.flat } });
+      } else if (type === 'step') {
+        const event = session.step();
+        const body = { type: 'result', value: { event } };
+        if (message.render) {
+          const img = image(session, message.render);
+          Object.assign(body.value, img);
+          reply(id, body, [img.image]);
+        } else reply(id, body);
+      } else if (type === 'run') {
+        await run(id, sid, session, message);
+      } else if (type === 'pause') {
+        for (const run of running.values()) if (run.session === sid) run.on = false;
+        reply(id, { type: 'result', value: null });
+      } else if (type === 'call') {
+        const member = session[message.method];
+        const value = typeof member === 'function' ? member.apply(session, convertArgs(message.args ?? [])) : member;
+        reply(id, { type: 'result', value: cloneable(value) });
+      } else if (type === 'render') {
+        const img = image(session, message.method, message.width, message.height);
+        reply(id, { type: 'result', value: img }, [img.image]);
+      } else if (type === 'free') {
+        session.free();
+        sessions.delete(sid);
+        exemplars.get(sid)?.free();
+        exemplars.delete(sid);
+        reply(id, { type: 'result', value: null });
+      } else throw new Error(`unknown message type '${type}'`);
+    } catch (error) {
+      running.delete(id);
+      fail(id, error);
+    }
+  });
+}

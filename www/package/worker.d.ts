@@ -1,0 +1,81 @@
+// `texsynth-wasm/worker`: sessions in a Web Worker (browsers) or a worker_threads Worker (Node).
+import type {
+  Exemplar, FlowAnimationEvent, FlowAnimationOptions, GraphcutMergeEvent, GraphcutTexturesEvent,
+  GraphcutTexturesOptions, LayerDesignEvent, LayerDesignOptions, TextureBrushOptions,
+  TextureOptimizationEvent, TextureOptimizationOptions, TileableEvent, TileableOptions,
+} from './index.js';
+
+/** An exemplar to send to a worker: an Exemplar (copied), PNG/JPEG bytes, or raw RGBA. */
+export type ExemplarInput = Exemplar | { bytes: ArrayBuffer | Uint8Array } | { rgba: Uint8Array | Uint8ClampedArray; width: number; height: number };
+
+/** Session kinds with their constructor arguments and events. */
+export interface SessionKinds {
+  TextureOptimization: { args: [ExemplarInput, TextureOptimizationOptions?]; event: TextureOptimizationEvent };
+  GraphcutTextures: { args: [ExemplarInput, GraphcutTexturesOptions?]; event: GraphcutTexturesEvent };
+  FlowAnimation: { args: [ExemplarInput, FlowAnimationOptions?]; event: FlowAnimationEvent };
+  TileableSession: { args: [ExemplarInput, TileableOptions?]; event: TileableEvent };
+  GraphcutMerge: { args: [number, number, (boolean | null)?]; event: GraphcutMergeEvent };
+  LayerDesign: { args: [LayerDesignOptions?]; event: LayerDesignEvent };
+  TextureBrush: { args: [ExemplarInput, TextureBrushOptions?]; event: never };
+}
+export type SessionKind = keyof SessionKinds;
+
+/** Pixels from the worker (transferred, yours to keep): usable as `new ImageData(data, width, height)`. */
+export interface WorkerImage { data: Uint8ClampedArray; width: number; height: number }
+
+/** A view method of the session that writes RGBA into a buffer. */
+export type RenderMethod = 'renderInto' | 'renderOffsetMap' | 'renderSeams' | 'renderSeamCost' | 'renderLabels' | 'renderNaiveInto' | 'renderSources';
+
+export interface WorkerRunOptions<E> {
+  /** Aborting pauses the session after the current step; `run` rejects with the signal's reason. */
+  signal?: AbortSignal;
+  /** Every event, with the image every `every` steps and at the end (null otherwise). */
+  onEvent?: (event: E, image: WorkerImage | null) => void;
+  /** Which view to stream. Default: 'renderInto'; null streams no image. */
+  render?: RenderMethod | null;
+  /** Send the image every this many steps. Default: 1. */
+  every?: number;
+}
+
+export class WorkerSession<K extends SessionKind = SessionKind> {
+  readonly kind: K;
+  readonly width: number;
+  readonly height: number;
+  /** Whether the last event seen was the final one. */
+  readonly done: boolean;
+  step(options?: { render?: RenderMethod | null }): Promise<{ event: SessionKinds[K]['event']; image?: WorkerImage }>;
+  /** Runs until done or paused: `{ paused, event }`. */
+  run(options?: WorkerRunOptions<SessionKinds[K]['event']>): Promise<{ paused: boolean; event: SessionKinds[K]['event'] | null }>;
+  /** Stops a run after the current step. */
+  pause(): Promise<void>;
+  /**
+   * Calls a method or reads a getter of the session in the worker (schedule, field, energyHistory,
+   * setConstraints, ...). Exemplar arguments as `{ exemplar }`; an Exemplar result comes back as
+   * `{ width, height, png }` (`Exemplar.fromBytes(png)` rebuilds it).
+   */
+  call<T = unknown>(method: string, ...args: unknown[]): Promise<T>;
+  /** A view rendered in the worker. */
+  render(method?: RenderMethod, width?: number, height?: number): Promise<WorkerImage>;
+  free(): Promise<void>;
+}
+
+/** One worker; hosts any number of sessions. */
+export class TexsynthWorker {
+  readonly ready: Promise<void>;
+  createSession<K extends SessionKind>(kind: K, ...args: SessionKinds[K]['args']): Promise<WorkerSession<K>>;
+  terminate(): void;
+}
+
+/** Independent jobs over several workers. */
+export class WorkerPool {
+  run<K extends SessionKind>(
+    kind: K,
+    args: SessionKinds[K]['args'],
+    options?: { signal?: AbortSignal; onEvent?: (event: SessionKinds[K]['event'], image: WorkerImage | null) => void; every?: number },
+  ): Promise<{ event: SessionKinds[K]['event'] | null; image: WorkerImage | null }>;
+  close(): void;
+}
+
+export function createWorker(): TexsynthWorker;
+/** Default size: the core count, at most 4. */
+export function createPool(size?: number): WorkerPool;
