@@ -3,6 +3,7 @@
 //! correspondences and warp, and `measureBrokenFeatures` scores any output.
 
 use js_sys::{Array, Float32Array, Uint8ClampedArray};
+use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
@@ -100,6 +101,14 @@ impl FeatureMap {
         Ok(())
     }
 
+    /// The curves as a mask, one byte per pixel (1 on a curve): `featureMask` of
+    /// `FeatureSynthesis`.
+    #[wasm_bindgen(js_name = toMask)]
+    pub fn to_mask(&self) -> js_sys::Uint8Array {
+        let bytes: Vec<u8> = self.map.mask.iter().map(|&m| u8::from(m)).collect();
+        js_sys::Uint8Array::from(bytes.as_slice())
+    }
+
     /// The curves as RGBA: coloured by orientation bucket, transparent elsewhere.
     #[wasm_bindgen(js_name = renderInto)]
     pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
@@ -142,6 +151,7 @@ const KNOWN: &[&str] = &[
     "threshold",
     "alpha",
     "seed",
+    "featureMask",
 ];
 
 fn read_options(value: &JsValue) -> JsResult<FeatureOptions> {
@@ -210,9 +220,41 @@ pub struct FeatureSynthesis {
 #[wasm_bindgen]
 impl FeatureSynthesis {
     #[wasm_bindgen(constructor)]
+    ///
+    /// `featureMask` (a Uint8Array, one byte per exemplar pixel, non-zero on a curve, as
+    /// `FeatureMap.toMask()` gives it) replaces the detected curves, so that an edited map can be
+    /// sent to a worker; the tangents still come from the exemplar.
     pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<FeatureSynthesis> {
+        let parsed = read_options(&options)?;
+        let js = OptionsReader::new(&options, KNOWN)?;
+        let map = match js.value("featureMask") {
+            None => None,
+            Some(v) => {
+                let Some(bytes) = v.dyn_ref::<js_sys::Uint8Array>() else {
+                    return Err(invalid(
+                        "featureMask",
+                        "must be a Uint8Array, one byte per exemplar pixel",
+                    ));
+                };
+                let img = exemplar.image();
+                let n = img.width() * img.height();
+                if bytes.length() as usize != n {
+                    return Err(Error::LengthMismatch {
+                        what: "featureMask",
+                        expected: n,
+                        actual: bytes.length() as usize,
+                    }
+                    .into());
+                }
+                let mut map = detect(img, parsed.detect)?;
+                for (m, b) in map.mask.iter_mut().zip(bytes.to_vec()) {
+                    *m = b != 0;
+                }
+                Some(map)
+            }
+        };
         Ok(FeatureSynthesis {
-            synthesis: Synthesis::new(exemplar.image(), None, read_options(&options)?)?,
+            synthesis: Synthesis::new(exemplar.image(), map, parsed)?,
         })
     }
 

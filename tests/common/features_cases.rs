@@ -52,6 +52,53 @@ fn a_feature_map_is_detected_edited_and_used() {
     s.render_into(&out).unwrap();
     let broken = measure_broken_features(&ex, &out.to_vec(), 96, 96, JsValue::UNDEFINED).unwrap();
     assert!(broken.is_finite());
+    // The edited map sent as a mask, as the page sends it to its worker.
+    let mut again = FeatureSynthesis::new(
+        &ex,
+        options(&[
+            ("outputWidth", 96.into()),
+            ("outputHeight", 96.into()),
+            ("patchSize", 32.into()),
+            ("featureMask", map.to_mask().into()),
+        ]),
+    )
+    .unwrap();
+    while !again.done() {
+        again.step().unwrap();
+    }
+    let out2 = Uint8ClampedArray::new_with_length(96 * 96 * 4);
+    again.render_into(&out2).unwrap();
+    let mut third = FeatureSynthesis::with_feature_map(
+        &ex,
+        &map,
+        options(&[
+            ("outputWidth", 96.into()),
+            ("outputHeight", 96.into()),
+            ("patchSize", 32.into()),
+        ]),
+    )
+    .unwrap();
+    while !third.done() {
+        third.step().unwrap();
+    }
+    let out3 = Uint8ClampedArray::new_with_length(96 * 96 * 4);
+    third.render_into(&out3).unwrap();
+    assert_eq!(
+        out.to_vec(),
+        out3.to_vec(),
+        "with_feature_map repeats exactly"
+    );
+    assert!(
+        out2.to_vec().chunks(4).all(|p| p[3] == 255),
+        "the edited map sent as a mask runs"
+    );
+    assert!(
+        error_message(FeatureSynthesis::new(
+            &ex,
+            options(&[("featureMask", js_sys::Uint8Array::new_with_length(5).into())])
+        ))
+        .contains("featureMask has length 5")
+    );
 }
 
 #[wasm_bindgen_test]
@@ -83,5 +130,38 @@ fn bad_feature_input_is_named() {
             JsValue::UNDEFINED
         ))
         .contains("length")
+    );
+}
+#[wasm_bindgen_test]
+fn a_feature_mask_sent_as_bytes_gives_the_map_s_synthesis() {
+    let ex = Exemplar::from_bytes(TILES_64).unwrap();
+    let map = detect_features(&ex, JsValue::UNDEFINED).unwrap();
+    let opts = |extra: Option<JsValue>| {
+        let mut e = vec![
+            ("outputWidth", 96.into()),
+            ("outputHeight", 96.into()),
+            ("patchSize", 32.into()),
+        ];
+        if let Some(m) = extra {
+            e.push(("featureMask", m));
+        }
+        options(&e)
+    };
+    let run = |mut s: FeatureSynthesis| {
+        while !s.done() {
+            s.step().unwrap();
+        }
+        let o = Uint8ClampedArray::new_with_length(96 * 96 * 4);
+        s.render_into(&o).unwrap();
+        o.to_vec()
+    };
+    let detected = run(FeatureSynthesis::new(&ex, opts(None)).unwrap());
+    assert_eq!(
+        run(FeatureSynthesis::new(&ex, opts(Some(map.to_mask().into()))).unwrap()),
+        detected
+    );
+    assert_eq!(
+        run(FeatureSynthesis::with_feature_map(&ex, &map, opts(None)).unwrap()),
+        detected
     );
 }

@@ -3,13 +3,13 @@
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { basename, extname, join } from 'node:path';
 import { parseArgs } from 'node:util';
-import { Exemplar, FlowAnimation, GraphcutTextures, TextureOptimization, measureQuality, version } from './node.js';
+import { Exemplar, FeatureSynthesis, FlowAnimation, GraphcutTextures, TextureOptimization, measureQuality, version } from './node.js';
 
 const HELP = `texsynth-wasm ${version()}: texture synthesis from the command line
 
 Usage:
   texsynth-wasm synth IN.png [IN2.png ...] -o OUT.png [options]
-      --method optimization|graphcut   (default optimization: Kwatra et al. 2005; graphcut: 2003)
+      --method optimization|graphcut|features   (default optimization: Kwatra et al. 2005; graphcut: 2003; features: Wu & Yu 2004)
       --size WxH                       output size (default 256x256)
       --seed N[,N...]                  seed or seeds (default 1)
       --tileable                       make the output tile seamlessly
@@ -123,13 +123,14 @@ function progressOf(kind, session, options) {
       return 0.8 + (0.2 * (event.patchesPlaced - placedWhenCovered)) / (options.refinementPatches ?? 24);
     }
     if (kind === 'FlowAnimation') return (event.frame ?? 0) / (session.frames || 1);
+    if (kind === 'FeatureSynthesis') return (event.patch + 1) / (event.patches || 1);
     if (kind === 'TextureOptimization') return Math.min(0.99, ((event.level ?? 0) + (event.iteration ?? 0) / 6) / (event.levelCount || 1));
     return 0;
   };
 }
 
-const SESSION_OF = { optimization: 'TextureOptimization', graphcut: 'GraphcutTextures' };
-const CLASSES = { TextureOptimization, GraphcutTextures };
+const SESSION_OF = { optimization: 'TextureOptimization', graphcut: 'GraphcutTextures', features: 'FeatureSynthesis' };
+const CLASSES = { TextureOptimization, GraphcutTextures, FeatureSynthesis };
 
 function outputPath(pattern, name, seed, many) {
   if (pattern.includes('{name}') || pattern.includes('{seed}')) return pattern.replaceAll('{name}', name).replaceAll('{seed}', String(seed));
@@ -143,7 +144,7 @@ async function synth(positionals, values) {
   if (!values.output) throw new UsageError('synth needs -o OUT.png');
   const method = values.method ?? 'optimization';
   const kind = SESSION_OF[method];
-  if (!kind) throw new UsageError(`--method must be optimization or graphcut (got '${method}')`);
+  if (!kind) throw new UsageError(`--method must be optimization, graphcut or features (got '${method}')`);
   const seeds = (values.seed ?? '1').split(',').map((s) => parseInt10(s, '--seed'));
   const options = { ...parseSize(values.size ?? '256x256'), ...parseSets(values.set) };
   if (values.tileable) options.tileable = true;

@@ -524,6 +524,86 @@ export class LayerDesign implements Steppable<LayerDesignEvent> {
   readonly height: number;
 }
 
+// ---------------------------------------------------------------- feature-guided synthesis (Wu & Yu 2004)
+
+/** Options of the feature detector (`detectFeatures`, and the same keys in `FeatureSynthesisOptions`). */
+export interface DetectFeaturesOptions {
+  /** Which curves make the map. Default: 'ridges'. */
+  features?: 'ridges' | 'edges' | 'both';
+  /** Percentile of the responses above which a pixel is a strong feature, 0.5..0.999. Default: 0.9. */
+  threshold?: number;
+  /** Weak features: at least alpha times a nearby strong response, 0..1. Default: 0.3. */
+  alpha?: number;
+}
+/** An exemplar's feature map: one-pixel-wide curves with their tangents; paint to correct it. */
+export class FeatureMap {
+  free(): void;
+  [Symbol.dispose](): void;
+  /** Paints (`on` true) or erases a disc of `radius` (0..64) pixels at (x, y). */
+  paint(x: number, y: number, radius: number, on: boolean): void;
+  /** The curves as RGBA, coloured by orientation bucket. */
+  renderInto(target: RgbaTarget): void;
+  /** One byte per pixel, 1 on a curve: `featureMask` of `FeatureSynthesisOptions`. */
+  toMask(): Uint8Array;
+  readonly width: number;
+  readonly height: number;
+  readonly count: number;
+}
+export function detectFeatures(exemplar: Exemplar, options?: DetectFeaturesOptions): FeatureMap;
+
+/** Options of `FeatureSynthesis`. */
+export interface FeatureSynthesisOptions extends DetectFeaturesOptions {
+  /** Default: 256. */
+  outputWidth?: number;
+  /** Default: 256. */
+  outputHeight?: number;
+  /** 16..128, at most the exemplar's side. Default: 64. */
+  patchSize?: number;
+  /** Context-region width. Default: a quarter of patchSize. */
+  overlap?: number;
+  /** Weight of the feature cost against the colour SSD, 0..1. Default: 0.5. */
+  featureWeight?: number;
+  /** Bend each patch onto the context's features. Default: true. */
+  warp?: boolean;
+  /** Candidates within (1 + tolerance) of the best are drawn at random, 0..10. Default: 0.1. */
+  tolerance?: number;
+  /** Best candidates by colour whose feature cost is computed. Default: 256. */
+  featureCandidates?: number;
+  /** Deformed copies of the exemplar as extra inputs. Default: []. */
+  extraInputs?: Array<'rotate90' | 'rotate180' | 'rotate270' | 'mirror' | 'flip'>;
+  /** Default: 1. */
+  seed?: number;
+  /** An edited feature map, one byte per exemplar pixel (`FeatureMap.toMask()`). Default: detected. */
+  featureMask?: Uint8Array;
+}
+export interface FeatureSynthesisEvent {
+  kind: 'patch' | 'done'; done: boolean; patch: number; patches: number; x: number; y: number;
+  input: number; sourceX: number; sourceY: number; featureCost: number; colourCost: number;
+  contextFeatures: number; correspondences: number; warp: 'none' | 'spline' | 'shepard' | 'skipped';
+  /** True when the choice used colour only (no oriented features to match). */
+  colourOnly: boolean;
+}
+/** The last placement: patch, context region, correspondences (x, y, partner x, partner y) and warp grid (dx, dy every 4 px). */
+export interface FeaturePlacement { x: number; y: number; size: number; top: number; left: number; pairs: Float32Array; grid: Float32Array }
+export class FeatureSynthesis implements Steppable<FeatureSynthesisEvent> {
+  constructor(exemplar: Exemplar, options?: FeatureSynthesisOptions);
+  static withFeatureMap(exemplar: Exemplar, map: FeatureMap, options?: FeatureSynthesisOptions): FeatureSynthesis;
+  free(): void;
+  [Symbol.dispose](): void;
+  [Symbol.iterator](): Iterator<FeatureSynthesisEvent>;
+  run(options?: RunOptions<FeatureSynthesisEvent>): Promise<FeatureSynthesisEvent | null>;
+  step(): FeatureSynthesisEvent;
+  renderInto(target: RgbaTarget): void;
+  /** The synthesised feature map, coloured by orientation. */
+  renderFeatures(target: RgbaTarget): void;
+  placement(): FeaturePlacement;
+  readonly done: boolean;
+  readonly width: number;
+  readonly height: number;
+}
+/** Curve ends per 1000 curve pixels in the output's feature map minus the exemplar's (lower is better). */
+export function measureBrokenFeatures(exemplar: Exemplar, rgba: Bytes, width: number, height: number, options?: DetectFeaturesOptions): number;
+
 // ---------------------------------------------------------------- quality
 
 /** Quality of an output against its exemplar; lower is better for all four. */

@@ -3,6 +3,7 @@ import type {
   Exemplar, FlowAnimationEvent, FlowAnimationOptions, GraphcutMergeEvent, GraphcutTexturesEvent,
   GraphcutTexturesOptions, LayerDesignEvent, LayerDesignOptions, TextureBrushOptions,
   TextureOptimizationEvent, TextureOptimizationOptions, TileableEvent, TileableOptions,
+  FeatureSynthesisEvent, FeatureSynthesisOptions,
 } from './index.js';
 
 /** An exemplar to send to a worker: an Exemplar (copied), PNG/JPEG bytes, or raw RGBA. */
@@ -17,6 +18,7 @@ export interface SessionKinds {
   GraphcutMerge: { args: [number, number, (boolean | null)?]; event: GraphcutMergeEvent };
   LayerDesign: { args: [LayerDesignOptions?]; event: LayerDesignEvent };
   TextureBrush: { args: [ExemplarInput, TextureBrushOptions?]; event: never };
+  FeatureSynthesis: { args: [ExemplarInput, FeatureSynthesisOptions?]; event: FeatureSynthesisEvent };
 }
 export type SessionKind = keyof SessionKinds;
 
@@ -24,7 +26,7 @@ export type SessionKind = keyof SessionKinds;
 export interface WorkerImage { data: Uint8ClampedArray; width: number; height: number }
 
 /** A view method of the session that writes RGBA into a buffer. */
-export type RenderMethod = 'renderInto' | 'renderOffsetMap' | 'renderSeams' | 'renderSeamCost' | 'renderLabels' | 'renderNaiveInto' | 'renderSources';
+export type RenderMethod = 'renderInto' | 'renderOffsetMap' | 'renderSeams' | 'renderSeamCost' | 'renderLabels' | 'renderNaiveInto' | 'renderSources' | 'renderFeatures';
 
 export interface WorkerRunOptions<E> {
   /** Aborting pauses the session after the current step; `run` rejects with the signal's reason. */

@@ -659,3 +659,31 @@ mod tests {
         );
     }
 }
+#[cfg(test)]
+mod mask_tests {
+    use super::*;
+    use crate::core::testing::sample;
+
+    #[test]
+    fn a_map_rebuilt_from_its_mask_gives_the_same_synthesis() {
+        let ex = sample("tiles_64");
+        let mut map = detect(&ex, DetectOptions::default()).unwrap();
+        map.paint(10.0, 10.0, 3.0, false);
+        map.paint(40.0, 40.0, 1.0, true);
+        let mut rebuilt = detect(&ex, DetectOptions::default()).unwrap();
+        rebuilt.mask.clone_from(&map.mask);
+        assert!(rebuilt == map);
+        let options = FeatureOptions {
+            output_width: 96,
+            output_height: 96,
+            patch_size: 32,
+            ..FeatureOptions::default()
+        };
+        let run = |m: FeatureMap| {
+            let mut s = FeatureSynthesis::new(&ex, Some(m), options.clone()).unwrap();
+            while !s.step().unwrap().done {}
+            s.image().clone()
+        };
+        assert!(run(map) == run(rebuilt));
+    }
+}

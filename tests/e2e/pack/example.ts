@@ -2,6 +2,7 @@
 // Lines marked @ts-expect-error must fail to type-check: they prove the types are not `any`.
 import init, {
   Exemplar, FlowAnimation, GraphcutMerge, GraphcutTextures, LayerDesign, TextureBrush, TextureOptimization,
+  FeatureMap, FeatureSynthesis, detectFeatures, measureBrokenFeatures,
   TileableSession, deformTexture, deformationSet, flowField, initSync, makeTileable, measureQuality, start, version,
   yieldToEventLoop,
   type FlowAnimationEvent, type GraphcutTexturesEvent, type Quality, type TextureOptimizationEvent, type TexsynthError,
@@ -38,6 +39,19 @@ async function everything(): Promise<void> {
   const last: TextureOptimizationEvent | null = await to.run({ signal, onEvent: (event) => event.neighbourhoodSize });
   to.renderInto(rgba);
   to.renderOffsetMap(rgba);
+
+  const map: FeatureMap = detectFeatures(ex, { features: 'ridges', threshold: 0.9 });
+  map.paint(3, 4, 2, true);
+  const fg = FeatureSynthesis.withFeatureMap(ex, map, { patchSize: 32, warp: true, extraInputs: ['mirror'] });
+  for (const event of new FeatureSynthesis(ex, { outputWidth: 64 })) {
+    const w: 'none' | 'spline' | 'shepard' | 'skipped' = event.warp;
+  }
+  const fe = fg.step();
+  const pairs: Float32Array = fg.placement().pairs;
+  fg.renderFeatures(rgba);
+  const broken: number = measureBrokenFeatures(ex, rgba, 256, 256, { features: 'edges' });
+  // @ts-expect-error: not a feature kind
+  detectFeatures(ex, { features: 'corners' });
   const history: Float64Array = to.energyHistory();
   const levels: Uint32Array = to.historyLevels();
   const plan = to.schedule().map((l) => l.neighbourhoodSize * l.scale);
@@ -135,6 +149,7 @@ type _Coverage = [
   Covers<Generated.GraphcutTextures, GraphcutTextures>, Covers<Generated.GraphcutMerge, GraphcutMerge>,
   Covers<Generated.FlowAnimation, FlowAnimation>, Covers<Generated.TileableSession, TileableSession>,
   Covers<Generated.TextureBrush, TextureBrush>, Covers<Generated.LayerDesign, LayerDesign>,
+  Covers<Generated.FeatureSynthesis, FeatureSynthesis>, Covers<Generated.FeatureMap, FeatureMap>,
 ];
 // Every export of the generated module is declared (generated names are a subset of the typed).
 type _Functions = Covers<keyof typeof import('texsynth-wasm'), keyof typeof import('texsynth-wasm/texsynth.js')>;
