@@ -2,9 +2,12 @@
 // erase), the synthesis placing patches live with its own feature map beside it, the current
 // patch's context region, correspondences and warp grid, and plain graph-cut textures run on the
 // same exemplar and seed for comparison, with the broken-feature count of each.
-import { FeatureSynthesis, GraphcutTextures, detectFeatures, measureBrokenFeatures } from '../pkg/texsynth.js';
+// Both syntheses run in the page's worker (www/lib/worker.js); the exemplar's map is detected and
+// edited here (one call on an exemplar-sized image) and sent along as a mask.
+import { detectFeatures, measureBrokenFeatures } from '../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../lib/canvas.js';
 import { showQuality } from '../lib/quality.js';
+import { remoteSession } from '../lib/worker.js';
 
 export const id = 'features';
 export const title = 'Feature-guided';
@@ -39,7 +42,9 @@ export function createPanel(ui) {
   let mapOf = null;
   let synthesis = null;
   let graphcut = null;
+  let pending = null;
   let painting = false;
+  const FEATURE_VIEWS = { views: ['renderInto', 'renderFeatures'], calls: ['placement'] };
 
   const detectOptions = () => ({ features: ui.$('fg-kind').value, threshold: Number(ui.$('fg-threshold').value) });
 
@@ -78,12 +83,13 @@ export function createPanel(ui) {
       seed: ui.seed(),
       patchSize: Number(ui.$('fg-patch').value),
       warp: ui.$('fg-warp').checked,
+      featureMask: map.toMask(),
       ...detectOptions(),
     };
   }
 
   function drawPlacement() {
-    const p = synthesis.placement();
+    const p = synthesis.result('placement');
     const canvas = ui.outputCanvas;
     const ctx = canvas.getContext('2d');
     const s = canvas.width / synthesis.width;
@@ -144,7 +150,21 @@ export function createPanel(ui) {
     synthesis = null;
     graphcut?.free();
     graphcut = null;
+    pending = null;
     delete document.body.dataset.featuresDone;
+  }
+
+  /** Makes (once) the session `make()` resolves to; null when a reset came in between. */
+  async function made(make) {
+    pending ??= make();
+    const current = pending;
+    const session = await current;
+    if (pending !== current) {
+      session.free();
+      return null;
+    }
+    pending = null;
+    return session;
   }
 
   return {
@@ -171,28 +191,36 @@ export function createPanel(ui) {
       map?.free();
       map = null;
     },
-    step() {
+    async step() {
+      if (!map || mapOf !== ui.exemplar()) detect();
       if (!synthesis) {
-        if (!map || mapOf !== ui.exemplar()) detect();
-        synthesis = FeatureSynthesis.withFeatureMap(ui.exemplar(), map, options());
+        synthesis = await made(() => remoteSession('FeatureSynthesis', [ui.exemplar(), options()], FEATURE_VIEWS));
+        if (!synthesis) return null;
       }
+      const compare = ui.$('fg-compare').checked;
       if (!synthesis.done) {
-        const event = synthesis.step();
-        const compare = ui.$('fg-compare').checked;
+        const current = synthesis;
+        const event = await current.step();
+        if (synthesis !== current) return null; // reset while the step ran
         return { ...event, phase: 'features', done: event.done && !compare };
       }
+      if (!compare) return null;
       if (!graphcut) {
-        graphcut = new GraphcutTextures(ui.exemplar(), { outputWidth: ui.outputWidth(), outputHeight: ui.outputHeight(), seed: ui.seed() });
+        const options = { outputWidth: ui.outputWidth(), outputHeight: ui.outputHeight(), seed: ui.seed() };
+        graphcut = await made(() => remoteSession('GraphcutTextures', [ui.exemplar(), options], { views: ['renderInto'] }));
+        if (!graphcut) return null;
       }
       if (graphcut.done) return null;
-      const event = graphcut.step();
+      const current = graphcut;
+      const event = await current.step();
+      if (graphcut !== current) return null;
       return { ...event, phase: 'graphcut' };
     },
     onStep(event) {
       if (event.phase === 'features') {
         zoomCanvas();
         drawPlacement();
-        drawInto(ui.$('fg-map'), { width: synthesis.width, height: synthesis.height, renderInto: (b) => synthesis.renderFeatures(b) });
+        drawInto(ui.$('fg-map'), { width: synthesis.width, height: synthesis.height, renderInto: (b) => synthesis.view('renderFeatures', b) });
         const how = event.colourOnly ? 'colour only (no oriented features to match)'
           : `feature cost ${event.featureCost.toFixed(2)} · colour ${event.colourCost.toExponential(2)}`;
         ui.$('fg-readout').textContent = `patch ${event.patch + 1}/${event.patches} from (${event.sourceX}, ${event.sourceY}) · ` +
@@ -200,10 +228,12 @@ export function createPanel(ui) {
         document.body.dataset.featurePatches = String(event.patch + 1);
         if (event.patch + 1 === event.patches) {
           const b = broken(synthesis);
-          showQuality(ui.$('fg-quality'), ui.exemplar(), synthesis);
-          ui.$('fg-quality').textContent += ` · broken features ${b.toFixed(1)}`;
-          ui.$('fg-quality').dataset.broken = String(b);
-          if (!ui.$('fg-compare').checked) document.body.dataset.featuresDone = 'true';
+          const quality = ui.$('fg-quality');
+          quality.dataset.broken = String(b);
+          showQuality(quality, ui.exemplar(), synthesis).then(() => {
+            quality.textContent += ` · broken features ${b.toFixed(1)}`;
+            if (!ui.$('fg-compare').checked) document.body.dataset.featuresDone = 'true';
+          });
         }
       } else {
         drawInto(ui.$('fg-graphcut'), graphcut);
