@@ -13,7 +13,9 @@ use crate::core::error::check_size;
 use crate::core::sample::sample_bicubic;
 use crate::core::{Edge, Error, Image, Result, Rng};
 use crate::methods::design::deform::Deformation;
-use crate::methods::graphcut::overlap::{Overlap, keep_old, pins_from_outside};
+use crate::methods::graphcut::overlap::{
+    Overlap, check_scan_geometry, keep_old, pins_from_outside, scan_origins,
+};
 use crate::solvers::fft_ssd::{Boundary, SsdSearch};
 use crate::solvers::maxflow::Graph;
 
@@ -84,25 +86,13 @@ impl FeatureOptions {
                 reason: format!("{} is larger than the {ew}x{eh} exemplar", self.patch_size),
             });
         }
-        if self.output_width < self.patch_size || self.output_height < self.patch_size {
-            return Err(Error::InvalidSize {
-                what: "output",
-                width: self.output_width,
-                height: self.output_height,
-                reason: format!("must be at least the patch size {}", self.patch_size),
-            });
-        }
-        let zone = self.zone();
-        if zone < 2 || 2 * zone >= self.patch_size {
-            return Err(Error::InvalidParameter {
-                name: "overlap",
-                reason: format!(
-                    "must be between 2 and {} for patches of {}, got {zone}",
-                    (self.patch_size - 1) / 2,
-                    self.patch_size
-                ),
-            });
-        }
+        check_scan_geometry(
+            self.output_width,
+            self.output_height,
+            self.patch_size,
+            self.zone(),
+            2,
+        )?;
         for (name, v, hi) in [
             ("featureWeight", self.feature_weight, 1.0),
             ("tolerance", self.tolerance, 10.0),
@@ -193,16 +183,6 @@ pub struct FeatureSynthesis {
     placement: Placement,
 }
 
-fn origins(len: usize, patch: usize, step: usize) -> Vec<usize> {
-    let mut out: Vec<usize> = (0..)
-        .map(|i| i * step)
-        .take_while(|&o| o + patch < len)
-        .collect();
-    out.push(len - patch);
-    out.dedup();
-    out
-}
-
 impl FeatureSynthesis {
     /// Detects the exemplar's feature map (or takes `map`, e.g. one edited by hand) and those of
     /// the extra inputs.
@@ -243,8 +223,8 @@ impl FeatureSynthesis {
         }
         let (w, h) = (options.output_width, options.output_height);
         let step = options.patch_size - options.zone();
-        let ys = origins(h, options.patch_size, step);
-        let xs = origins(w, options.patch_size, step);
+        let ys = scan_origins(h, options.patch_size, step);
+        let xs = scan_origins(w, options.patch_size, step);
         Ok(FeatureSynthesis {
             output: Image::new(w, h, exemplar.channels())?,
             filled: vec![false; w * h],

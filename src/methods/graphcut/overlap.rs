@@ -4,7 +4,7 @@
 //! design, feature-guided synthesis).
 
 use super::cost::colour_distance;
-use crate::core::Result;
+use crate::core::{Error, Result};
 use crate::solvers::maxflow::{Graph, HARD_CONSTRAINT};
 
 /// A `width` x `height` window: the old colours, the new patch's, which pixels are already made,
@@ -103,10 +103,70 @@ pub fn pins_from_outside(
         .collect()
 }
 
+/// Patch origins along one side of a scan-order fill: every `step` pixels, the last one flush
+/// with the end.
+#[must_use]
+pub fn scan_origins(len: usize, patch: usize, step: usize) -> Vec<usize> {
+    let mut out: Vec<usize> = (0..)
+        .map(|i| i * step)
+        .take_while(|&o| o + patch < len)
+        .collect();
+    out.push(len - patch);
+    out.dedup();
+    out
+}
+
+/// The geometry every scan-order fill needs: an output at least one patch wide and high, and an
+/// overlap `zone` of at least `min_zone` and under half the patch (so each step advances).
+pub fn check_scan_geometry(
+    output_width: usize,
+    output_height: usize,
+    patch: usize,
+    zone: usize,
+    min_zone: usize,
+) -> Result<()> {
+    if output_width < patch || output_height < patch {
+        return Err(Error::InvalidSize {
+            what: "output",
+            width: output_width,
+            height: output_height,
+            reason: format!("must be at least the patch size {patch}"),
+        });
+    }
+    if zone < min_zone || 2 * zone >= patch {
+        return Err(Error::InvalidParameter {
+            name: "overlap",
+            reason: format!(
+                "must be between {min_zone} and {} for patches of {patch}, got {zone}",
+                (patch - 1) / 2
+            ),
+        });
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::core::Rng;
+
+    #[test]
+    fn scan_origins_cover_the_side_and_end_flush() {
+        assert_eq!(scan_origins(100, 32, 27), vec![0, 27, 54, 68]);
+        assert_eq!(scan_origins(32, 32, 27), vec![0]);
+        assert!(
+            check_scan_geometry(20, 40, 32, 5, 2)
+                .unwrap_err()
+                .to_string()
+                .contains("20x40")
+        );
+        assert!(
+            check_scan_geometry(40, 40, 32, 16, 2)
+                .unwrap_err()
+                .to_string()
+                .contains("overlap")
+        );
+    }
 
     /// The seam's cost equals the brute-force minimum over all labellings of the free pixels.
     #[test]

@@ -5,7 +5,9 @@ use super::qtp::{Query, SearchCount, SearchTexture};
 use crate::core::error::check_size;
 use crate::core::{Error, Image, Result, Rng};
 use crate::methods::design::deform::{Deformation, deform};
-use crate::methods::graphcut::overlap::{Overlap, keep_old, pins_from_outside};
+use crate::methods::graphcut::overlap::{
+    Overlap, check_scan_geometry, keep_old, pins_from_outside, scan_origins,
+};
 use crate::solvers::maxflow::Graph;
 
 /// How patch positions are searched.
@@ -92,25 +94,13 @@ impl LayerOptions {
                 reason: format!("must be between 8 and 256, got {}", self.patch_size),
             });
         }
-        if self.output_width < self.patch_size || self.output_height < self.patch_size {
-            return Err(Error::InvalidSize {
-                what: "output",
-                width: self.output_width,
-                height: self.output_height,
-                reason: format!("must be at least the patch size {}", self.patch_size),
-            });
-        }
-        let zone = self.zone();
-        if zone < 1 || 2 * zone >= self.patch_size {
-            return Err(Error::InvalidParameter {
-                name: "overlap",
-                reason: format!(
-                    "must be between 1 and {} for patches of {}, got {zone}",
-                    (self.patch_size - 1) / 2,
-                    self.patch_size
-                ),
-            });
-        }
+        check_scan_geometry(
+            self.output_width,
+            self.output_height,
+            self.patch_size,
+            self.zone(),
+            1,
+        )?;
         if !(1..=256).contains(&self.keep) {
             return Err(Error::InvalidParameter {
                 name: "keep",
@@ -165,16 +155,6 @@ pub struct LayerDesign {
     last: Option<LayerEvent>,
 }
 
-/// Patch origins along one side: every `step`, the last one flush with the end.
-fn origins(len: usize, patch: usize, step: usize) -> Vec<usize> {
-    let mut out: Vec<usize> = (0..)
-        .map(|i| i * step)
-        .take_while(|&o| o + patch < len)
-        .collect();
-    out.push(len - patch);
-    out.dedup();
-    out
-}
 
 impl LayerDesign {
     /// Validates everything; `layout` holds one layer index per output pixel.
@@ -227,8 +207,8 @@ impl LayerDesign {
             .collect();
         let step = options.patch_size - options.zone();
         Ok(LayerDesign {
-            xs: origins(w, options.patch_size, step),
-            ys: origins(h, options.patch_size, step),
+            xs: scan_origins(w, options.patch_size, step),
+            ys: scan_origins(h, options.patch_size, step),
             output: Image::new(w, h, channels)?,
             filled: vec![false; w * h],
             layers: searches,
