@@ -13,9 +13,7 @@ use crate::core::error::check_size;
 use crate::core::sample::sample_bicubic;
 use crate::core::{Edge, Error, Image, Result, Rng};
 use crate::methods::design::deform::Deformation;
-use crate::methods::graphcut::overlap::{
-    Overlap, check_scan_geometry, keep_old, pins_from_outside, scan_origins,
-};
+use crate::methods::graphcut::overlap::{ScanWindow, check_scan_geometry, scan_origins};
 use crate::solvers::fft_ssd::{Boundary, SsdSearch};
 use crate::solvers::maxflow::Graph;
 
@@ -306,7 +304,15 @@ impl FeatureSynthesis {
         let (w, h) = (self.options.output_width, self.options.output_height);
         let c = self.output.channels();
         let at = |x: usize, y: usize| (py + y) * w + px + x;
-        let made: Vec<bool> = (0..p * p).map(|i| self.filled[at(i % p, i / p)]).collect();
+        let scan = ScanWindow {
+            filled: &self.filled,
+            output_width: w,
+            output_height: h,
+            x: px,
+            y: py,
+            size: p,
+        };
+        let made = scan.made();
         // The context region's shape: full made rows at the top, then made columns at the left.
         let top = (0..p)
             .take_while(|&y| (0..p).all(|x| made[y * p + x]))
@@ -440,19 +446,7 @@ impl FeatureSynthesis {
                     .copied()
             })
             .collect();
-        let pinned = pins_from_outside(&self.filled, w, h, px, py, p, p);
-        let keep = keep_old(
-            &mut self.graph,
-            &Overlap {
-                width: p,
-                height: p,
-                channels: c,
-                old: &old,
-                new: &new,
-                made: &made,
-                pinned_old: &pinned,
-            },
-        )?;
+        let keep = scan.keep_old(&mut self.graph, c, &old, &new)?;
         for i in (0..p * p).filter(|&i| !keep[i]) {
             let (x, y) = (i % p, i / p);
             self.output

@@ -103,6 +103,60 @@ pub fn pins_from_outside(
         .collect()
 }
 
+/// A square window at (x, y) of a scan-order fill's output, whose made pixels are `filled`
+/// (output-sized).
+pub struct ScanWindow<'a> {
+    pub filled: &'a [bool],
+    pub output_width: usize,
+    pub output_height: usize,
+    pub x: usize,
+    pub y: usize,
+    pub size: usize,
+}
+
+impl ScanWindow<'_> {
+    /// Which window pixels are made.
+    #[must_use]
+    pub fn made(&self) -> Vec<bool> {
+        let (w, p) = (self.output_width, self.size);
+        (0..p * p)
+            .map(|i| self.filled[(self.y + i / p) * w + self.x + i % p])
+            .collect()
+    }
+
+    /// [`keep_old`] for this window, with its made pixels and pins derived from `filled`.
+    pub fn keep_old(
+        &self,
+        graph: &mut Graph,
+        channels: usize,
+        old: &[f32],
+        new: &[f32],
+    ) -> Result<Vec<bool>> {
+        let made = self.made();
+        let pinned = pins_from_outside(
+            self.filled,
+            self.output_width,
+            self.output_height,
+            self.x,
+            self.y,
+            self.size,
+            self.size,
+        );
+        keep_old(
+            graph,
+            &Overlap {
+                width: self.size,
+                height: self.size,
+                channels,
+                old,
+                new,
+                made: &made,
+                pinned_old: &pinned,
+            },
+        )
+    }
+}
+
 /// Patch origins along one side of a scan-order fill: every `step` pixels, the last one flush
 /// with the end.
 #[must_use]

@@ -5,9 +5,7 @@ use super::qtp::{Query, SearchCount, SearchTexture};
 use crate::core::error::check_size;
 use crate::core::{Error, Image, Result, Rng};
 use crate::methods::design::deform::{Deformation, deform};
-use crate::methods::graphcut::overlap::{
-    Overlap, check_scan_geometry, keep_old, pins_from_outside, scan_origins,
-};
+use crate::methods::graphcut::overlap::{ScanWindow, check_scan_geometry, scan_origins};
 use crate::solvers::maxflow::Graph;
 
 /// How patch positions are searched.
@@ -154,7 +152,6 @@ pub struct LayerDesign {
     count: SearchCount,
     last: Option<LayerEvent>,
 }
-
 
 impl LayerDesign {
     /// Validates everything; `layout` holds one layer index per output pixel.
@@ -340,22 +337,15 @@ impl LayerDesign {
                 .collect()
         };
         let (old, new) = (window(&self.output, px, py), window(tex, sx, sy));
-        let made: Vec<bool> = (0..p * p)
-            .map(|i| self.filled[(py + i / p) * w + px + i % p])
-            .collect();
-        let pinned = pins_from_outside(&self.filled, w, h, px, py, p, p);
-        let keep = keep_old(
-            &mut self.graph,
-            &Overlap {
-                width: p,
-                height: p,
-                channels: c,
-                old: &old,
-                new: &new,
-                made: &made,
-                pinned_old: &pinned,
-            },
-        )?;
+        let window = ScanWindow {
+            filled: &self.filled,
+            output_width: w,
+            output_height: h,
+            x: px,
+            y: py,
+            size: p,
+        };
+        let keep = window.keep_old(&mut self.graph, c, &old, &new)?;
         for (i, _) in keep.iter().enumerate().filter(|(_, k)| !**k) {
             let (x, y) = (i % p, i / p);
             self.output
