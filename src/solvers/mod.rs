@@ -2,6 +2,7 @@
 //! slow, obvious oracle.
 
 pub mod distance;
+pub mod fft;
 pub mod fft_ssd;
 pub mod maxflow;
 pub mod nn;

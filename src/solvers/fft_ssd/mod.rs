@@ -26,11 +26,9 @@
 mod tests;
 mod transform;
 
-use realfft::RealFftPlanner;
-use realfft::num_complex::Complex;
-use rustfft::FftPlanner;
+use transform::Transform2d;
 
-use transform::{Transform2d, smooth_size};
+use crate::solvers::fft::{Complex, correlate_spectra, smooth_size};
 
 use crate::core::{Error, Image, Result};
 
@@ -121,8 +119,6 @@ impl SsdMap {
 /// A reusable FFT SSD search: it keeps the FFT plans and buffers between calls, since a synthesis
 /// searches once per patch placement with the same sizes every time.
 pub struct SsdSearch {
-    real_planner: RealFftPlanner<f64>,
-    complex_planner: FftPlanner<f64>,
     transform: Option<Transform2d>,
     /// Real-valued work image of the transform size.
     field: Vec<f64>,
@@ -170,8 +166,6 @@ impl SsdSearch {
     #[must_use]
     pub fn new() -> Self {
         SsdSearch {
-            real_planner: RealFftPlanner::new(),
-            complex_planner: FftPlanner::new(),
             transform: None,
             field: Vec::new(),
             spectra: Default::default(),
@@ -225,9 +219,10 @@ impl SsdSearch {
         let (ow, oh) = (output.image.width(), output.image.height());
         let (pw, ph) = (patch.image.width(), patch.image.height());
         let (nx, ny, map_width, map_height, first_offset) = match boundary {
-            // Padding to at least `ow + pw - 1` keeps the circular correlation from wrapping.
+            // Padding to at least `ow + pw - 1` keeps the circular correlation from wrapping; an
+            // even width lets the row transforms run at half length.
             Boundary::Open => (
-                smooth_size(ow + pw - 1),
+                2 * smooth_size((ow + pw - 1).div_ceil(2)),
                 smooth_size(oh + ph - 1),
                 ow + pw - 1,
                 oh + ph - 1,
@@ -281,34 +276,18 @@ impl SsdSearch {
 
         output.scatter(field, nx, ny, |_, w| w);
         transform.forward(field, output_w);
-        for ((c, &o), &p) in cost.iter_mut().zip(output_w.iter()).zip(patch_w.iter()) {
-            *c = o * p.conj();
-        }
+        correlate_spectra(cost, output_w, patch_w, 1.0, false);
         transform.inverse(cost, field);
         let mut areas = read_map(field, nx, ny, map_width, map_height, first_offset);
 
         output.scatter(field, nx, ny, |pixel, w| w * squared_norm(pixel));
         transform.forward(field, tmp_output);
-        for ((c, &o), &p) in cost.iter_mut().zip(tmp_output.iter()).zip(patch_w.iter()) {
-            *c = o * p.conj();
-        }
-        for ((c, &o), &p) in cost
-            .iter_mut()
-            .zip(output_w.iter())
-            .zip(patch_squares.iter())
-        {
-            *c += o * p.conj();
-        }
+        correlate_spectra(cost, tmp_output, patch_w, 1.0, false);
+        correlate_spectra(cost, output_w, patch_squares, 1.0, true);
         for channel in 0..output.image.channels() {
             output.scatter(field, nx, ny, |pixel, w| w * f64::from(pixel[channel]));
             transform.forward(field, tmp_output);
-            for ((c, &o), &p) in cost
-                .iter_mut()
-                .zip(tmp_output.iter())
-                .zip(patch_spectra[2 + channel].iter())
-            {
-                *c -= 2.0 * o * p.conj();
-            }
+            correlate_spectra(cost, tmp_output, &patch_spectra[2 + channel], -2.0, true);
         }
         transform.inverse(cost, field);
         let mut costs = read_map(field, nx, ny, map_width, map_height, first_offset);
@@ -330,7 +309,7 @@ impl SsdSearch {
         })
     }
 
-    /// Plans the transforms for an `nx` x `ny` grid (the planners cache the plans) and sizes the
+    /// Plans the transforms for an `nx` x `ny` grid (planned again only when the size changes) and sizes the
     /// buffers.
     fn prepare(&mut self, nx: usize, ny: usize) {
         if self
@@ -338,12 +317,7 @@ impl SsdSearch {
             .as_ref()
             .is_none_or(|t| (t.nx, t.ny) != (nx, ny))
         {
-            self.transform = Some(Transform2d::new(
-                nx,
-                ny,
-                &mut self.real_planner,
-                &mut self.complex_planner,
-            ));
+            self.transform = Some(Transform2d::new(nx, ny));
         }
         self.field.resize(nx * ny, 0.0);
         for spectrum in &mut self.spectra {

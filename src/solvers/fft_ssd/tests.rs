@@ -329,9 +329,3 @@ fn fft_ssd_timing() {
         }
     }
 }
-
-#[test]
-fn smooth_sizes_have_only_small_prime_factors() {
-    let sizes: Vec<usize> = [0, 1, 7, 11, 13, 97, 128, 129].map(smooth_size).to_vec();
-    assert_eq!(sizes, [1, 1, 8, 12, 15, 100, 128, 135]);
-}
