@@ -41,34 +41,54 @@ fn main() {
         let mut rows = [[0.0f64; 5]; 2];
         for &seed in &seeds {
             let start = Instant::now();
-            let mut f = FeatureSynthesis::new(
-                &exemplar,
-                None,
-                FeatureOptions {
-                    seed,
-                    warp,
-                    patch_size: patch,
-                    tolerance: std::env::var("TOL").map_or(0.1, |v| v.parse().expect("tolerance")),
-                    feature_candidates: std::env::var("CANDIDATES")
-                        .map_or(256, |v| v.parse().expect("candidates")),
-                    feature_weight: std::env::var("FW").map_or(0.5, |v| v.parse().expect("weight")),
-                    ..FeatureOptions::default()
-                },
-            )
-            .expect("features");
-            let mut kinds = std::collections::BTreeMap::new();
-            loop {
-                let e = f.step().expect("step");
-                *kinds.entry(format!("{:?}", e.warp)).or_insert(0) += 1;
-                if e.done {
-                    break;
+            let out_f = if std::env::var("MODE").is_ok_and(|m| m == "hybrid") {
+                let map = texsynth::methods::features::detect(&exemplar, detect).expect("map");
+                let mut f = texsynth::methods::features::hybrid::GraphcutFeatures::new(
+                    &exemplar,
+                    vec![map],
+                    vec![],
+                    Options {
+                        seed,
+                        ..Options::default()
+                    },
+                    std::env::var("FW").map_or(0.5, |v| v.parse().expect("weight")),
+                    std::env::var("CANDIDATES").map_or(256, |v| v.parse().expect("candidates")),
+                )
+                .expect("hybrid");
+                while !f.step().expect("step").done {}
+                f.session.output().expect("output")
+            } else {
+                let mut f = FeatureSynthesis::new(
+                    &exemplar,
+                    None,
+                    FeatureOptions {
+                        seed,
+                        warp,
+                        patch_size: patch,
+                        tolerance: std::env::var("TOL")
+                            .map_or(0.1, |v| v.parse().expect("tolerance")),
+                        feature_candidates: std::env::var("CANDIDATES")
+                            .map_or(256, |v| v.parse().expect("candidates")),
+                        feature_weight: std::env::var("FW")
+                            .map_or(0.5, |v| v.parse().expect("weight")),
+                        ..FeatureOptions::default()
+                    },
+                )
+                .expect("features");
+                let mut kinds = std::collections::BTreeMap::new();
+                loop {
+                    let e = f.step().expect("step");
+                    *kinds.entry(format!("{:?}", e.warp)).or_insert(0) += 1;
+                    if e.done {
+                        break;
+                    }
                 }
-            }
-            if std::env::var("KINDS").is_ok() {
-                eprintln!("{name} seed {seed}: {kinds:?}");
-            }
+                if std::env::var("KINDS").is_ok() {
+                    eprintln!("{name} seed {seed}: {kinds:?}");
+                }
+                f.image().clone()
+            };
             let t_f = start.elapsed().as_secs_f64() * 1e3;
-            let out_f = f.image().clone();
             let start = Instant::now();
             let mut g = Session::new(
                 &exemplar,
@@ -106,7 +126,7 @@ fn main() {
         }
         for (method, r) in ["features", "graphcut"].iter().zip(&rows) {
             println!(
-                "{name}\t{method}\t{:.0}\t{:.5}\t{:.5}\t{:.3}\t{:.1}",
+                "{name}\t{method}\t{:.0}\t{:.2e}\t{:.2e}\t{:.3}\t{:.1}",
                 r[0], r[1], r[2], r[3], r[4]
             );
         }

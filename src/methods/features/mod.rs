@@ -11,6 +11,7 @@ pub mod thinning;
 
 pub use detect::{DetectOptions, FeatureKind, FeatureMap, detect};
 pub mod broken;
+pub mod hybrid;
 mod session;
 
 pub use alignment::WarpKind;
