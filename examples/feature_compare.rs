@@ -3,12 +3,16 @@
 //! (default: the six structured samples and the rest of the shared set). Prints per sample and
 //! method: time, coherence, completeness, flat fraction and the broken-feature count (curve
 //! ends per 1000 curve pixels above the exemplar's; lower is better). `WRITE=dir` writes the
-//! outputs; `SEEDS=1,2,3` averages over seeds; `WARP=0` turns the alignment off; `PATCH=48` (default 64).
+//! outputs; `SEEDS=1,2,3` averages over seeds; `WARP=0` turns the alignment off; `PATCH=48` (default 64);
+//! `PLACEMENT=scan` (default graphcut); `SEAMW=0` (the seam's feature-mismatch weight, default 1);
+//! `TOL`, `FW`, `CANDIDATES` as the options of the same names; `KINDS=1` prints the warp kinds.
 
 use std::time::Instant;
 use texsynth::core::{Image, decode, encode_png};
 use texsynth::methods::features::broken::broken_features;
-use texsynth::methods::features::{DetectOptions, FeatureOptions, FeatureSynthesis};
+use texsynth::methods::features::{
+    DetectOptions, FeatureOptions, FeaturePlacement, FeatureSynthesis,
+};
 use texsynth::methods::graphcut::{Options, Session};
 use texsynth::methods::quality::quality;
 
@@ -41,23 +45,7 @@ fn main() {
         let mut rows = [[0.0f64; 5]; 2];
         for &seed in &seeds {
             let start = Instant::now();
-            let out_f = if std::env::var("MODE").is_ok_and(|m| m == "hybrid") {
-                let map = texsynth::methods::features::detect(&exemplar, detect).expect("map");
-                let mut f = texsynth::methods::features::hybrid::GraphcutFeatures::new(
-                    &exemplar,
-                    vec![map],
-                    vec![],
-                    Options {
-                        seed,
-                        ..Options::default()
-                    },
-                    std::env::var("FW").map_or(0.5, |v| v.parse().expect("weight")),
-                    std::env::var("CANDIDATES").map_or(256, |v| v.parse().expect("candidates")),
-                )
-                .expect("hybrid");
-                while !f.step().expect("step").done {}
-                f.session.output().expect("output")
-            } else {
+            let out_f = {
                 let mut f = FeatureSynthesis::new(
                     &exemplar,
                     None,
@@ -65,6 +53,15 @@ fn main() {
                         seed,
                         warp,
                         patch_size: patch,
+                        placement: std::env::var("PLACEMENT").map_or(
+                            FeaturePlacement::Graphcut,
+                            |v| {
+                                FeaturePlacement::from_name(&v)
+                                    .expect("placement: graphcut or scan")
+                            },
+                        ),
+                        seam_feature_weight: std::env::var("SEAMW")
+                            .map_or(1.0, |v| v.parse().expect("seam weight")),
                         tolerance: std::env::var("TOL")
                             .map_or(0.1, |v| v.parse().expect("tolerance")),
                         feature_candidates: std::env::var("CANDIDATES")

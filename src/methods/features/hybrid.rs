@@ -10,10 +10,12 @@
 
 use super::detect::FeatureMap;
 use super::matching::{FeatureIndex, TAU_MATCH};
-use crate::core::Result;
+use crate::core::{Image, Result};
 use crate::methods::graphcut::canvas::{Patch, UNCOVERED};
 use crate::methods::graphcut::placement::Candidate;
+use crate::methods::graphcut::source::Source;
 use crate::methods::graphcut::synthesis::Synthesis;
+use crate::methods::graphcut::{Event, Options, Session};
 
 /// One source of the synthesis with its features.
 pub struct SourceFeatures {
@@ -209,19 +211,22 @@ pub fn choose(
     let mean_colour = mean(&mut best.iter().map(|c| c.cost));
     let mean_feature = mean(&mut costs.iter().map(|c| c.0));
     let colour_only = mean_feature <= 0.0 || features.iter().all(|f| f.pixels.is_empty());
-    // The feature cost in SSD units: equal weights (0.5) make a candidate at the mean feature cost
-    // pay the mean colour cost.
-    let lambda = if colour_only || feature_weight >= 1.0 {
-        0.0
+    // The feature cost in SSD units: at weight 0.5 a candidate at the mean feature cost pays the
+    // mean colour cost again; weight 0 is graph cut's own choice, weight 1 features alone.
+    let (wc, wf) = if colour_only {
+        (1.0, 0.0)
     } else {
-        feature_weight / (1.0 - feature_weight) * mean_colour.max(1e-12) / mean_feature
+        (
+            (2.0 * (1.0 - feature_weight)).min(1.0),
+            (2.0 * feature_weight).min(1.0) * mean_colour.max(1e-12) / mean_feature,
+        )
     };
     let combined: Vec<Candidate> = best
         .iter()
         .zip(&costs)
         .map(|(c, f)| Candidate {
             patch: c.patch,
-            cost: c.cost + lambda * f.0,
+            cost: wc * c.cost + wf * f.0,
         })
         .collect();
     let patch = s.choose(&combined)?;
@@ -235,58 +240,142 @@ pub fn choose(
     })
 }
 
+/// The feature-guided choices of graph-cut placement.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HybridOptions {
+    /// Weight of the feature cost against the colour SSD (0.5: alike).
+    pub feature_weight: f32,
+    /// Candidates, the best by colour, whose feature cost is computed.
+    pub candidates: usize,
+    /// Width of the frontier band whose features make the context.
+    pub band: usize,
+    /// Seam cost per pixel where the two patches disagree on a feature.
+    pub seam_feature_weight: f32,
+}
+
 /// A graph-cut synthesis whose offsets are chosen with the feature cost.
 pub struct GraphcutFeatures {
-    pub session: crate::methods::graphcut::Session,
+    pub session: Session,
     pub features: Vec<SourceFeatures>,
-    pub feature_weight: f32,
-    pub keep: usize,
+    pub options: HybridOptions,
+    /// The last step's choice.
     pub last: Option<Choice>,
 }
 
 impl GraphcutFeatures {
-    /// `sources`: the images after the exemplar (extra inputs) with every source's feature map,
-    /// the exemplar's first.
+    /// `maps`: the feature map of every source, the exemplar's first; `extra`: the images of the
+    /// sources after the exemplar (extra inputs).
     pub fn new(
-        exemplar: &crate::core::Image,
+        exemplar: &Image,
         maps: Vec<FeatureMap>,
-        extra: Vec<crate::core::Image>,
-        options: crate::methods::graphcut::Options,
-        feature_weight: f32,
-        keep: usize,
+        extra: Vec<Image>,
+        options: Options,
+        hybrid: HybridOptions,
     ) -> Result<GraphcutFeatures> {
         let mut synthesis = Synthesis::new(exemplar, options)?;
         for (k, image) in extra.into_iter().enumerate() {
             synthesis
                 .sources
-                .push(crate::methods::graphcut::source::Source::new(
-                    image,
-                    1.0,
-                    format!("input {}", k + 1),
-                ));
+                .push(Source::new(image, 1.0, format!("input {}", k + 1)));
         }
         synthesis.seam_features = maps.iter().map(|m| m.mask.clone()).collect();
-        synthesis.seam_feature_weight = std::env::var("SEAMW").map_or(0.0, |v| v.parse().unwrap());
+        synthesis.seam_feature_weight = hybrid.seam_feature_weight;
         Ok(GraphcutFeatures {
-            session: crate::methods::graphcut::Session::from_synthesis(synthesis),
+            session: Session::from_synthesis(synthesis),
             features: maps.into_iter().map(SourceFeatures::new).collect(),
-            feature_weight,
-            keep,
+            options: hybrid,
             last: None,
         })
     }
 
-    pub fn step(&mut self) -> Result<crate::methods::graphcut::Event> {
+    /// Places one patch (graph cut's step with the feature-guided choice).
+    pub fn step(&mut self) -> Result<Event> {
         let features = &mut self.features;
-        let (wf, keep) = (self.feature_weight, self.keep);
-        let band = std::env::var("BAND").map_or(16, |v| v.parse().unwrap());
+        let o = self.options;
         let mut last = None;
         let event = self.session.step_with(|s, scored| {
-            let c = choose(s, features, scored, wf, keep, band)?;
+            let c = choose(s, features, scored, o.feature_weight, o.candidates, o.band)?;
             last = Some(c);
             Some(c.patch)
         })?;
         self.last = last;
         Ok(event)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::testing::sample;
+    use crate::methods::features::detect::{DetectOptions, detect};
+    use crate::methods::features::matching::{ContextFeature, Region};
+
+    #[test]
+    fn eq2_in_exemplar_coordinates_equals_the_l_shaped_cost() {
+        let ex = sample("tiles_64");
+        let map = detect(&ex, DetectOptions::default()).unwrap();
+        let mut index = FeatureIndex::new(&map);
+        let region = Region {
+            size: 24,
+            top: 6,
+            left: 6,
+        };
+        // The context: the features of the exemplar's own L at (20, 12), shifted by one pixel.
+        let context: Vec<ContextFeature> = (0..24 * 24)
+            .map(|i| (i % 24, i / 24))
+            .filter(|&(x, y)| region.contains(x, y) && map.mask[(13 + y) * 64 + 21 + x])
+            .map(|(x, y)| ContextFeature {
+                x,
+                y,
+                angle: map.angle[(13 + y) * 64 + 21 + x],
+            })
+            .collect();
+        assert!(context.len() > 5);
+        let (tx, ty) = (20, 12);
+        let l = index.cost(&context, region, tx, ty, TAU_MATCH, 12.0);
+        let points: Vec<(usize, usize, f32)> = context
+            .iter()
+            .map(|f| (tx + f.x, ty + f.y, f.angle))
+            .collect();
+        let inside = |j: usize| {
+            let (x, y) = (j % 64, j / 64);
+            x >= tx && y >= ty && region.contains(x - tx, y - ty)
+        };
+        let n = (0..64 * 64).filter(|&j| map.mask[j] && inside(j)).count() as u32;
+        let e = index.cost_in_exemplar(&points, n, inside, TAU_MATCH, 12.0);
+        assert!((l - e).abs() < 1e-6, "{l} {e}");
+        assert!(l > 0.0);
+    }
+
+    #[test]
+    fn the_frontier_is_the_made_band_next_to_unmade_pixels() {
+        let ex = sample("tiles_64");
+        let mut s = Synthesis::new(
+            &ex,
+            Options {
+                output_width: 96,
+                output_height: 80,
+                ..Options::default()
+            },
+        )
+        .unwrap();
+        s.place(
+            Patch {
+                source: 0,
+                tx: 0,
+                ty: 0,
+            },
+            &[],
+            &[],
+        )
+        .unwrap();
+        let near = frontier(&s, 5);
+        for y in 0..80 {
+            for x in 0..96 {
+                let made = x < 64 && y < 64;
+                let close = made && (x + 5 >= 64 || y + 5 >= 64);
+                assert_eq!(near[y * 96 + x], close, "({x}, {y})");
+            }
+        }
     }
 }

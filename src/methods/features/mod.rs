@@ -15,4 +15,4 @@ pub mod hybrid;
 mod session;
 
 pub use alignment::WarpKind;
-pub use session::{FeatureEvent, FeatureOptions, FeatureSynthesis, Placement};
+pub use session::{FeatureEvent, FeatureOptions, FeaturePlacement, FeatureSynthesis, Placement};
