@@ -3,12 +3,16 @@
 //! (default: the six structured samples and the rest of the shared set). Prints per sample and
 //! method: time, coherence, completeness, flat fraction and the broken-feature count (curve
 //! ends per 1000 curve pixels above the exemplar's; lower is better). `WRITE=dir` writes the
-//! outputs; `SEEDS=1,2,3` averages over seeds; `WARP=0` turns the alignment off; `PATCH=48` (default 64).
+//! outputs; `SEEDS=1,2,3` averages over seeds; `WARP=0` turns the alignment off; `PATCH=48` (default 64);
+//! `PLACEMENT=scan` (default graphcut); `SEAMW=0` (the seam's feature-mismatch weight, default 1);
+//! `TOL`, `FW`, `CANDIDATES` as the options of the same names; `KINDS=1` prints the warp kinds.
 
 use std::time::Instant;
 use texsynth::core::{Image, decode, encode_png};
 use texsynth::methods::features::broken::broken_features;
-use texsynth::methods::features::{DetectOptions, FeatureOptions, FeatureSynthesis};
+use texsynth::methods::features::{
+    DetectOptions, FeatureOptions, FeaturePlacement, FeatureSynthesis,
+};
 use texsynth::methods::graphcut::{Options, Session};
 use texsynth::methods::quality::quality;
 
@@ -41,34 +45,47 @@ fn main() {
         let mut rows = [[0.0f64; 5]; 2];
         for &seed in &seeds {
             let start = Instant::now();
-            let mut f = FeatureSynthesis::new(
-                &exemplar,
-                None,
-                FeatureOptions {
-                    seed,
-                    warp,
-                    patch_size: patch,
-                    tolerance: std::env::var("TOL").map_or(0.1, |v| v.parse().expect("tolerance")),
-                    feature_candidates: std::env::var("CANDIDATES")
-                        .map_or(256, |v| v.parse().expect("candidates")),
-                    feature_weight: std::env::var("FW").map_or(0.5, |v| v.parse().expect("weight")),
-                    ..FeatureOptions::default()
-                },
-            )
-            .expect("features");
-            let mut kinds = std::collections::BTreeMap::new();
-            loop {
-                let e = f.step().expect("step");
-                *kinds.entry(format!("{:?}", e.warp)).or_insert(0) += 1;
-                if e.done {
-                    break;
+            let out_f = {
+                let mut f = FeatureSynthesis::new(
+                    &exemplar,
+                    None,
+                    FeatureOptions {
+                        seed,
+                        warp,
+                        patch_size: patch,
+                        placement: std::env::var("PLACEMENT").map_or(
+                            FeaturePlacement::Graphcut,
+                            |v| {
+                                FeaturePlacement::from_name(&v)
+                                    .expect("placement: graphcut or scan")
+                            },
+                        ),
+                        seam_feature_weight: std::env::var("SEAMW")
+                            .map_or(1.0, |v| v.parse().expect("seam weight")),
+                        tolerance: std::env::var("TOL")
+                            .map_or(0.1, |v| v.parse().expect("tolerance")),
+                        feature_candidates: std::env::var("CANDIDATES")
+                            .map_or(256, |v| v.parse().expect("candidates")),
+                        feature_weight: std::env::var("FW")
+                            .map_or(0.5, |v| v.parse().expect("weight")),
+                        ..FeatureOptions::default()
+                    },
+                )
+                .expect("features");
+                let mut kinds = std::collections::BTreeMap::new();
+                loop {
+                    let e = f.step().expect("step");
+                    *kinds.entry(format!("{:?}", e.warp)).or_insert(0) += 1;
+                    if e.done {
+                        break;
+                    }
                 }
-            }
-            if std::env::var("KINDS").is_ok() {
-                eprintln!("{name} seed {seed}: {kinds:?}");
-            }
+                if std::env::var("KINDS").is_ok() {
+                    eprintln!("{name} seed {seed}: {kinds:?}");
+                }
+                f.image().clone()
+            };
             let t_f = start.elapsed().as_secs_f64() * 1e3;
-            let out_f = f.image().clone();
             let start = Instant::now();
             let mut g = Session::new(
                 &exemplar,
@@ -106,7 +123,7 @@ fn main() {
         }
         for (method, r) in ["features", "graphcut"].iter().zip(&rows) {
             println!(
-                "{name}\t{method}\t{:.0}\t{:.5}\t{:.5}\t{:.3}\t{:.1}",
+                "{name}\t{method}\t{:.0}\t{:.2e}\t{:.2e}\t{:.3}\t{:.1}",
                 r[0], r[1], r[2], r[3], r[4]
             );
         }

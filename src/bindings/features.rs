@@ -14,8 +14,8 @@ use crate::core::{Error, from_rgba8};
 use crate::methods::design::Deformation;
 use crate::methods::features::broken::broken_features;
 use crate::methods::features::{
-    DetectOptions, FeatureKind, FeatureMap as Map, FeatureOptions, FeatureSynthesis as Synthesis,
-    WarpKind, detect,
+    DetectOptions, FeatureKind, FeatureMap as Map, FeatureOptions, FeaturePlacement,
+    FeatureSynthesis as Synthesis, WarpKind, detect,
 };
 
 fn invalid(name: &'static str, reason: impl Into<String>) -> JsError {
@@ -140,6 +140,8 @@ fn feature_rgba(mask: &[bool], angle: &[f32]) -> Vec<u8> {
 const KNOWN: &[&str] = &[
     "outputWidth",
     "outputHeight",
+    "placement",
+    "seamFeatureWeight",
     "patchSize",
     "overlap",
     "featureWeight",
@@ -181,7 +183,20 @@ fn read_options(value: &JsValue) -> JsResult<FeatureOptions> {
             });
         }
     }
+    let placement = match js.string("placement")? {
+        None => d.placement,
+        Some(name) => FeaturePlacement::from_name(&name).ok_or_else(|| {
+            invalid(
+                "placement",
+                format!("must be 'graphcut' or 'scan', got '{name}'"),
+            )
+        })?,
+    };
     Ok(FeatureOptions {
+        placement,
+        seam_feature_weight: js
+            .number("seamFeatureWeight")?
+            .map_or(d.seam_feature_weight, |v| v as f32),
         output_width: js
             .integer("outputWidth", 1, 8192)?
             .map_or(d.output_width, |v| v as usize),

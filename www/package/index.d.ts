@@ -557,15 +557,21 @@ export interface FeatureSynthesisOptions extends DetectFeaturesOptions {
   outputWidth?: number;
   /** Default: 256. */
   outputHeight?: number;
-  /** 16..128, at most the exemplar's side. Default: 64. */
+  /** 'graphcut': graph-cut placement of the whole exemplar, offsets chosen by colour SSD plus the
+   *  feature cost over the band where the patch meets the made output, seams that also pay for
+   *  cutting curves (no warp); 'scan': the paper's patches in scan order, warped. Default: 'graphcut'. */
+  placement?: 'graphcut' | 'scan';
+  /** Graph-cut placement: seam cost per pixel where the two patches disagree on a curve, 0..100. Default: 1. */
+  seamFeatureWeight?: number;
+  /** 16..128, at most the exemplar's side (scan placement). Default: 64. */
   patchSize?: number;
-  /** Context-region width. Default: a quarter of patchSize. */
+  /** Context-region width (scan), or the width of the feature-cost band (graphcut). Default: a quarter of patchSize. */
   overlap?: number;
   /** Weight of the feature cost against the colour SSD, 0..1. Default: 0.5. */
   featureWeight?: number;
-  /** Bend each patch onto the context's features. Default: true. */
+  /** Bend each patch onto the context's features (scan placement). Default: true. */
   warp?: boolean;
-  /** Candidates within (1 + tolerance) of the best are drawn at random, 0..10. Default: 0.1. */
+  /** Scan placement: candidates within (1 + tolerance) of the best are drawn at random, 0..10. Default: 0.1. */
   tolerance?: number;
   /** Best candidates by colour whose feature cost is computed. Default: 256. */
   featureCandidates?: number;

@@ -17,6 +17,7 @@ const OPTIONS_HTML = `
     <option value="ridges">ridges (thin lines)</option><option value="edges">edges</option><option value="both">both</option></select></label>
   <label title="percentile of the responses above which a pixel is a strong feature">threshold
     <input id="fg-threshold" class="view" type="range" min="0.75" max="0.98" step="0.01" value="0.9"> <span id="fg-threshold-value">0.90</span></label>
+  <label title="graph cut: whole-exemplar patches, offsets and seams guided by the features (few seams); scan: the paper's patches in scan order, warped">placement <select id="fg-placement"><option value="graphcut" selected>graph cut</option><option value="scan">scan (paper)</option></select></label>
   <label title="patch side (the paper: 32 to 64)">patch <input id="fg-patch" type="number" value="64" min="16" max="128"></label>
   <label title="bend each patch so its features meet the placed ones (section 2.2)"><input id="fg-warp" type="checkbox" checked> warp</label>
   <label><input id="fg-compare" type="checkbox" checked> compare with graph cut</label>
@@ -81,6 +82,7 @@ export function createPanel(ui) {
       outputWidth: ui.outputWidth(),
       outputHeight: ui.outputHeight(),
       seed: ui.seed(),
+      placement: ui.$('fg-placement').value,
       patchSize: Number(ui.$('fg-patch').value),
       warp: ui.$('fg-warp').checked,
       featureMask: map.toMask(),
@@ -101,7 +103,7 @@ export function createPanel(ui) {
     if (p.top) ctx.fillRect(p.x * s, p.y * s, p.size * s, p.top * s);
     if (p.left) ctx.fillRect(p.x * s, (p.y + p.top) * s, p.left * s, (p.size - p.top) * s);
     // The warp as a grid deformed by the displacements (exaggerated 3x so a pixel shows).
-    const n = Math.ceil(p.size / 4);
+    const n = p.grid.length ? Math.ceil(p.size / 4) : 0;
     const at = (i, j) => {
       const k = (j * n + i) * 2;
       return [(p.x + i * 4 + 3 * p.grid[k]) * s, (p.y + j * 4 + 3 * p.grid[k + 1]) * s];
@@ -226,7 +228,7 @@ export function createPanel(ui) {
         ui.$('fg-readout').textContent = `patch ${event.patch + 1}/${event.patches} from (${event.sourceX}, ${event.sourceY}) · ` +
           `${event.contextFeatures} context features · ${event.correspondences} correspondences · warp: ${event.warp} · ${how}`;
         document.body.dataset.featurePatches = String(event.patch + 1);
-        if (event.patch + 1 === event.patches) {
+        if (event.done) {
           const b = broken(synthesis);
           const quality = ui.$('fg-quality');
           quality.dataset.broken = String(b);

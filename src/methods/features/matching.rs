@@ -147,13 +147,62 @@ impl FeatureIndex {
         let s = region.size;
         let n = self.count_in(tx, ty, tx + s, ty + region.top)
             + self.count_in(tx, ty + region.top, tx + region.left, ty + s);
-        if context.is_empty() {
+        let width = self.width;
+        self.eq2(
+            context.iter().map(|f| (tx + f.x, ty + f.y, f.angle)),
+            context.len(),
+            n,
+            |j| {
+                let (jx, jy) = (j % width, j / width);
+                jx >= tx && jy >= ty && region.contains(jx - tx, jy - ty)
+            },
+            tau,
+            miss,
+        )
+    }
+
+    /// Eq. 2 for a context given in exemplar coordinates: `context` holds, for every feature of
+    /// the output under the patch, the exemplar pixel the patch would show there and the output
+    /// feature's tangent. `overlap` is the number of exemplar features under the made part of the
+    /// patch, and `inside(j)` tells whether exemplar pixel `j` (y * width + x) lies there. For
+    /// whole-exemplar placements (graph-cut textures), whose made overlap has any shape.
+    pub fn cost_in_exemplar(
+        &mut self,
+        context: &[(usize, usize, f32)],
+        overlap: u32,
+        inside: impl Fn(usize) -> bool,
+        tau: f32,
+        miss: f32,
+    ) -> f32 {
+        self.eq2(
+            context.iter().copied(),
+            context.len(),
+            overlap,
+            inside,
+            tau,
+            miss,
+        )
+    }
+
+    /// The mean gdist of the context features (exemplar position and tangent) to their nearest
+    /// exemplar features, plus beta times the bijectivity term over the `n` exemplar features of
+    /// the overlap (`inside`).
+    fn eq2(
+        &mut self,
+        context: impl Iterator<Item = (usize, usize, f32)>,
+        len: usize,
+        n: u32,
+        inside: impl Fn(usize) -> bool,
+        tau: f32,
+        miss: f32,
+    ) -> f32 {
+        if len == 0 {
             // Every exemplar feature of the region is unmatched: |0 - 1| each.
             return if n > 0 { BETA } else { 0.0 };
         }
         let mut sum = 0.0f32;
-        for f in context {
-            match self.nearest(tx + f.x, ty + f.y, f.angle, tau) {
+        for (x, y, angle) in context {
+            match self.nearest(x, y, angle, tau) {
                 Some((j, g)) => {
                     sum += g;
                     if self.counts[j] == 0 {
@@ -170,8 +219,7 @@ impl FeatureIndex {
         let mut matched_inside = 0u32;
         for &j in &self.touched {
             excess += u32::from(self.counts[j]) - 1;
-            let (jx, jy) = (j % self.width, j / self.width);
-            if jx >= tx && jy >= ty && region.contains(jx - tx, jy - ty) {
+            if inside(j) {
                 matched_inside += 1;
             }
             self.counts[j] = 0;
@@ -179,7 +227,7 @@ impl FeatureIndex {
         self.touched.clear();
         let unmatched = n.saturating_sub(matched_inside);
         let bijectivity = (excess + unmatched) as f32 / n.max(1) as f32;
-        sum / context.len() as f32 + BETA * bijectivity
+        sum / len as f32 + BETA * bijectivity
     }
 
     /// The correspondences of the context at (tx, ty), one-to-one: where several context features

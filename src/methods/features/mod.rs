@@ -11,7 +11,8 @@ pub mod thinning;
 
 pub use detect::{DetectOptions, FeatureKind, FeatureMap, detect};
 pub mod broken;
+pub mod hybrid;
 mod session;
 
 pub use alignment::WarpKind;
-pub use session::{FeatureEvent, FeatureOptions, FeatureSynthesis, Placement};
+pub use session::{FeatureEvent, FeatureOptions, FeaturePlacement, FeatureSynthesis, Placement};

@@ -93,6 +93,8 @@ impl Merge {
             canvas,
             used: Default::default(),
             ssd: SsdSearch::new(),
+            seam_features: Vec::new(),
+            seam_feature_weight: 0.0,
         };
         Ok(Merge {
             synthesis,

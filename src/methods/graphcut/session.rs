@@ -47,6 +47,18 @@ impl Session {
         })
     }
 
+    /// A session over a synthesis set up by the caller (e.g. with sources of its own).
+    #[must_use]
+    pub fn from_synthesis(synthesis: Synthesis) -> Session {
+        Session {
+            synthesis,
+            refinements_done: 0,
+            finished: false,
+            last_region: None,
+            last: None,
+        }
+    }
+
     #[must_use]
     pub fn synthesis(&self) -> &Synthesis {
         &self.synthesis
@@ -65,6 +77,15 @@ impl Session {
 
     /// Places one patch.
     pub fn step(&mut self) -> Result<Event> {
+        self.step_with(|s, scored| s.choose(scored))
+    }
+
+    /// Places one patch, chosen among the scored candidates by `choose` instead of eq. 3 alone
+    /// (feature-guided placement adds its own cost). `None` ends the session.
+    pub fn step_with(
+        &mut self,
+        choose: impl FnOnce(&mut Synthesis, &[super::placement::Candidate]) -> Option<Patch>,
+    ) -> Result<Event> {
         if self.finished {
             return Ok(self.last.expect("a finished session has stepped"));
         }
@@ -73,7 +94,7 @@ impl Session {
         let region = s.error_region();
         let candidates = s.candidates(region);
         let scored = s.score(region, &candidates)?;
-        let chosen = s.choose(&scored);
+        let chosen = choose(s, &scored);
         let mut event = Event {
             done: false,
             patch: chosen,

@@ -22,6 +22,11 @@ pub struct Synthesis {
     pub sigma: f32,
     /// The FFT SSD search, kept between placements for its plans and buffers.
     pub ssd: SsdSearch,
+    /// Optional feature masks of the sources (one per source, row-major; empty: none), and the
+    /// cost a seam pays per pixel where the two patches disagree on a feature (feature-guided
+    /// placement: a cut through a curve that does not go on in the other patch breaks it).
+    pub seam_features: Vec<Vec<bool>>,
+    pub seam_feature_weight: f32,
 }
 
 impl Synthesis {
@@ -49,6 +54,8 @@ impl Synthesis {
             canvas,
             used: HashSet::new(),
             ssd: SsdSearch::new(),
+            seam_features: Vec::new(),
+            seam_feature_weight: 0.0,
         })
     }
 
@@ -82,13 +89,34 @@ impl Synthesis {
             return 0.0;
         }
         let gradient = self.options.gradient_cost;
-        match_cost(
+        let m = match_cost(
             self.sample(a, s, horizontal),
             self.sample(b, s, horizontal),
             self.sample(a, t, horizontal),
             self.sample(b, t, horizontal),
             gradient,
-        )
+        );
+        if self.seam_feature_weight > 0.0 && !self.seam_features.is_empty() {
+            let mismatch = |i: usize| match (self.feature_at(a, i), self.feature_at(b, i)) {
+                (Some(fa), Some(fb)) => f32::from(u8::from(fa != fb)),
+                _ => 0.0,
+            };
+            m + self.seam_feature_weight * (mismatch(s) + mismatch(t))
+        } else {
+            m
+        }
+    }
+
+    /// Whether `patch` shows a feature pixel at output pixel `i` (None where it does not reach
+    /// or its source has no feature mask).
+    #[inline]
+    #[must_use]
+    pub fn feature_at(&self, patch: Patch, i: usize) -> Option<bool> {
+        let (x, y) = (i % self.canvas.width, i / self.canvas.width);
+        let source = &self.sources[patch.source as usize];
+        let mask = self.seam_features.get(patch.source as usize)?;
+        let (sx, sy) = self.canvas.source_coords(patch, source, x, y)?;
+        mask.get(sy * source.width() + sx).copied()
     }
 
     /// The patch of a labelled pixel.

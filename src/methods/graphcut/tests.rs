@@ -126,6 +126,8 @@ impl Synthesis {
             used: self.used.clone(),
             sigma: self.sigma,
             ssd: crate::solvers::fft_ssd::SsdSearch::new(),
+            seam_features: self.seam_features.clone(),
+            seam_feature_weight: self.seam_feature_weight,
         }
     }
 
@@ -567,4 +569,42 @@ fn the_cut_is_not_biased_by_the_new_patch_brightness() {
             pa.cut_cost
         );
     }
+}
+
+/// The feature-mismatch seam term adds its weight per pixel where exactly one patch shows a
+/// feature, and nothing where they agree or one patch does not reach.
+#[test]
+fn the_seam_pays_for_features_the_patches_do_not_share() {
+    let ex = Image::from_fn(16, 16, 3, |x, y, c| ((x * 3 + y * 5 + c) % 7) as f32 / 7.0).unwrap();
+    let options = Options {
+        output_width: 24,
+        output_height: 24,
+        ..Options::default()
+    };
+    let mut s = Synthesis::new(&ex, options).unwrap();
+    let (a, b) = (
+        Patch {
+            source: 0,
+            tx: 0,
+            ty: 0,
+        },
+        Patch {
+            source: 0,
+            tx: 1,
+            ty: 0,
+        },
+    );
+    let plain = s.seam_cost(5 * 24 + 5, 5 * 24 + 6, true, a, b);
+    // A vertical curve at source column 5: patch a shows it at output x = 5, patch b at x = 6.
+    s.seam_features = vec![(0..256).map(|i| i % 16 == 5).collect()];
+    s.seam_feature_weight = 2.0;
+    let with = s.seam_cost(5 * 24 + 5, 5 * 24 + 6, true, a, b);
+    assert!((with - plain - 4.0).abs() < 1e-5, "{plain} {with}");
+    // Both patches agree there (no feature at output x = 9, 10 in either).
+    let far = s.seam_cost(5 * 24 + 9, 5 * 24 + 10, true, a, b);
+    s.seam_feature_weight = 0.0;
+    assert_eq!(far, s.seam_cost(5 * 24 + 9, 5 * 24 + 10, true, a, b));
+    // Patch b does not reach output x = 0: no mismatch can be seen there.
+    s.seam_feature_weight = 2.0;
+    assert_eq!(s.feature_at(b, 5 * 24), None);
 }

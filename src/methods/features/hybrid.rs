@@ -1,0 +1,381 @@
+//! Feature-guided placement for graph-cut textures: the paper's feature cost (eq. 2) joins the
+//! colour SSD of graph cut's entire-patch matching. Each step is graph cut's (Kwatra et al.
+//! 2003): an error region, every unused offset of the whole exemplar that covers it, the
+//! area-normalised SSD of each against the made output; then, for the best candidates by colour,
+//! eq. 2 between the output's features under the patch (the synthesised feature map: every made
+//! pixel shows a source pixel, whose feature it carries) and the exemplar's. The two costs are
+//! summed with the feature weight (each divided by its mean over the candidates, as in the
+//! scan-order synthesis), expressed in SSD units, and the offset is drawn by graph cut's eq. 3;
+//! the patch is merged with graph cut's seam memory and refinement patches.
+
+use super::detect::FeatureMap;
+use super::matching::{FeatureIndex, TAU_MATCH};
+use crate::core::{Image, Result};
+use crate::methods::graphcut::canvas::{Patch, UNCOVERED};
+use crate::methods::graphcut::placement::Candidate;
+use crate::methods::graphcut::source::Source;
+use crate::methods::graphcut::synthesis::Synthesis;
+use crate::methods::graphcut::{Event, Options, Session};
+
+/// One source of the synthesis with its features.
+pub struct SourceFeatures {
+    pub map: FeatureMap,
+    pub index: FeatureIndex,
+    /// Its feature pixels (y * width + x).
+    pub pixels: Vec<usize>,
+}
+
+impl SourceFeatures {
+    #[must_use]
+    pub fn new(map: FeatureMap) -> SourceFeatures {
+        SourceFeatures {
+            index: FeatureIndex::new(&map),
+            pixels: (0..map.mask.len()).filter(|&i| map.mask[i]).collect(),
+            map,
+        }
+    }
+}
+
+/// What a feature-guided graph-cut placement chose.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Choice {
+    pub patch: Patch,
+    pub feature_cost: f32,
+    pub colour_cost: f32,
+    pub context_features: usize,
+    pub colour_only: bool,
+}
+
+/// The synthesised feature map of a graph-cut canvas: each made pixel carries the feature (and
+/// tangent) of the source pixel it shows.
+#[must_use]
+pub fn canvas_features(s: &Synthesis, features: &[SourceFeatures]) -> (Vec<bool>, Vec<f32>) {
+    let (w, h) = (s.canvas.width, s.canvas.height);
+    let mut mask = vec![false; w * h];
+    let mut angle = vec![0.0f32; w * h];
+    for i in 0..w * h {
+        let label = s.canvas.label[i];
+        if label == UNCOVERED {
+            continue;
+        }
+        let patch = s.canvas.patches[label as usize];
+        let source = &s.sources[patch.source as usize];
+        if let Some((sx, sy)) = s.canvas.source_coords(patch, source, i % w, i / w) {
+            let f = &features[patch.source as usize].map;
+            let j = sy * f.width + sx;
+            mask[i] = f.mask[j];
+            angle[i] = f.angle[j];
+        }
+    }
+    (mask, angle)
+}
+
+/// Where the next patch meets the made output: made pixels within `band` pixels (Chebyshev) of
+/// an unmade one while the output is not covered, and the error region once it is. This is the
+/// context of the feature cost, as the L-shaped overlap is for scan-order patches: the seam runs
+/// there, so that is where features must continue.
+#[must_use]
+pub fn frontier(s: &Synthesis, band: usize) -> Vec<bool> {
+    let (w, h) = (s.canvas.width, s.canvas.height);
+    if s.canvas.is_covered() {
+        let r = s.error_region();
+        return (0..w * h)
+            .map(|i| {
+                crate::methods::graphcut::placement::region_contains(
+                    r,
+                    i % w,
+                    i / w,
+                    w,
+                    h,
+                    s.canvas.wrap,
+                )
+            })
+            .collect();
+    }
+    // Distance to the nearest unmade pixel by two separable running minima (Chebyshev).
+    let unmade: Vec<bool> = s.canvas.label.iter().map(|&l| l == UNCOVERED).collect();
+    let dilate = |m: &[bool], along_rows: bool| -> Vec<bool> {
+        let mut out = vec![false; w * h];
+        let (len, lines) = if along_rows { (w, h) } else { (h, w) };
+        for line in 0..lines {
+            let at = |k: usize| {
+                if along_rows {
+                    line * w + k
+                } else {
+                    k * w + line
+                }
+            };
+            let mut last: Option<usize> = None;
+            for k in 0..len {
+                if m[at(k)] {
+                    last = Some(k);
+                }
+                out[at(k)] = last.is_some_and(|l| k - l <= band);
+            }
+            let mut next: Option<usize> = None;
+            for k in (0..len).rev() {
+                if m[at(k)] {
+                    next = Some(k);
+                }
+                out[at(k)] |= next.is_some_and(|n| n - k <= band);
+            }
+        }
+        out
+    };
+    let near = dilate(&dilate(&unmade, true), false);
+    (0..w * h).map(|i| near[i] && !unmade[i]).collect()
+}
+
+/// Scores the candidates of one graph-cut step by colour SSD plus feature cost and draws one
+/// (eq. 3 of graph-cut textures on the combined cost). `keep` candidates, the best by colour,
+/// get the feature cost; the rest are dropped.
+pub fn choose(
+    s: &mut Synthesis,
+    features: &mut [SourceFeatures],
+    scored: &[Candidate],
+    feature_weight: f32,
+    keep: usize,
+    band: usize,
+) -> Option<Choice> {
+    if scored.is_empty() {
+        return None;
+    }
+    let (w, h) = (s.canvas.width, s.canvas.height);
+    if s.canvas.covered == 0 {
+        let patch = s.choose(scored)?;
+        return Some(Choice {
+            patch,
+            feature_cost: 0.0,
+            colour_cost: 0.0,
+            context_features: 0,
+            colour_only: false,
+        });
+    }
+    let (mask, angle) = canvas_features(s, features);
+    let near = frontier(s, band);
+    let made_features: Vec<usize> = (0..w * h).filter(|&i| mask[i] && near[i]).collect();
+    let mut best: Vec<Candidate> = scored
+        .iter()
+        .copied()
+        .filter(|c| c.cost.is_finite())
+        .collect();
+    if best.is_empty() {
+        return s.choose(scored).map(|patch| Choice {
+            patch,
+            feature_cost: 0.0,
+            colour_cost: 0.0,
+            context_features: 0,
+            colour_only: true,
+        });
+    }
+    let keep = keep.clamp(1, best.len());
+    best.select_nth_unstable_by(keep - 1, |a, b| a.cost.total_cmp(&b.cost));
+    best.truncate(keep);
+    let label = &s.canvas.label;
+    let mut context: Vec<(usize, usize, f32)> = Vec::new();
+    let mut costs: Vec<(f32, usize)> = Vec::with_capacity(best.len());
+    for c in &best {
+        let src = c.patch.source as usize;
+        let (sw, sh) = (s.sources[src].width(), s.sources[src].height());
+        let (tx, ty) = (i64::from(c.patch.tx), i64::from(c.patch.ty));
+        // The output's features under the patch, at the source pixels the patch shows there.
+        context.clear();
+        for &i in &made_features {
+            let (sx, sy) = ((i % w) as i64 - tx, (i / w) as i64 - ty);
+            if (0..sw as i64).contains(&sx) && (0..sh as i64).contains(&sy) {
+                context.push((sx as usize, sy as usize, angle[i]));
+            }
+        }
+        // The source's features that would land on made output pixels.
+        let made_at = |j: usize| {
+            let (ox, oy) = ((j % sw) as i64 + tx, (j / sw) as i64 + ty);
+            (0..w as i64).contains(&ox)
+                && (0..h as i64).contains(&oy)
+                && label[oy as usize * w + ox as usize] != UNCOVERED
+        };
+        let f = &mut features[src];
+        let overlap = f.pixels.iter().filter(|&&j| made_at(j)).count() as u32;
+        let cost = f.index.cost_in_exemplar(
+            &context,
+            overlap,
+            made_at,
+            TAU_MATCH,
+            sw.min(sh) as f32 / 4.0,
+        );
+        costs.push((cost, context.len()));
+    }
+    let mean = |v: &mut dyn Iterator<Item = f32>| {
+        let (sum, n) = v.fold((0.0f64, 0usize), |(s, n), x| (s + f64::from(x), n + 1));
+        (sum / n.max(1) as f64) as f32
+    };
+    let mean_colour = mean(&mut best.iter().map(|c| c.cost));
+    let mean_feature = mean(&mut costs.iter().map(|c| c.0));
+    let colour_only = mean_feature <= 0.0 || features.iter().all(|f| f.pixels.is_empty());
+    // The feature cost in SSD units: at weight 0.5 a candidate at the mean feature cost pays the
+    // mean colour cost again; weight 0 is graph cut's own choice, weight 1 features alone.
+    let (wc, wf) = if colour_only {
+        (1.0, 0.0)
+    } else {
+        (
+            (2.0 * (1.0 - feature_weight)).min(1.0),
+            (2.0 * feature_weight).min(1.0) * mean_colour.max(1e-12) / mean_feature,
+        )
+    };
+    let combined: Vec<Candidate> = best
+        .iter()
+        .zip(&costs)
+        .map(|(c, f)| Candidate {
+            patch: c.patch,
+            cost: wc * c.cost + wf * f.0,
+        })
+        .collect();
+    let patch = s.choose(&combined)?;
+    let k = best.iter().position(|c| c.patch == patch)?;
+    Some(Choice {
+        patch,
+        feature_cost: costs[k].0,
+        colour_cost: best[k].cost,
+        context_features: costs[k].1,
+        colour_only,
+    })
+}
+
+/// The feature-guided choices of graph-cut placement.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HybridOptions {
+    /// Weight of the feature cost against the colour SSD (0.5: alike).
+    pub feature_weight: f32,
+    /// Candidates, the best by colour, whose feature cost is computed.
+    pub candidates: usize,
+    /// Width of the frontier band whose features make the context.
+    pub band: usize,
+    /// Seam cost per pixel where the two patches disagree on a feature.
+    pub seam_feature_weight: f32,
+}
+
+/// A graph-cut synthesis whose offsets are chosen with the feature cost.
+pub struct GraphcutFeatures {
+    pub session: Session,
+    pub features: Vec<SourceFeatures>,
+    pub options: HybridOptions,
+    /// The last step's choice.
+    pub last: Option<Choice>,
+}
+
+impl GraphcutFeatures {
+    /// `maps`: the feature map of every source, the exemplar's first; `extra`: the images of the
+    /// sources after the exemplar (extra inputs).
+    pub fn new(
+        exemplar: &Image,
+        maps: Vec<FeatureMap>,
+        extra: Vec<Image>,
+        options: Options,
+        hybrid: HybridOptions,
+    ) -> Result<GraphcutFeatures> {
+        let mut synthesis = Synthesis::new(exemplar, options)?;
+        for (k, image) in extra.into_iter().enumerate() {
+            synthesis
+                .sources
+                .push(Source::new(image, 1.0, format!("input {}", k + 1)));
+        }
+        synthesis.seam_features = maps.iter().map(|m| m.mask.clone()).collect();
+        synthesis.seam_feature_weight = hybrid.seam_feature_weight;
+        Ok(GraphcutFeatures {
+            session: Session::from_synthesis(synthesis),
+            features: maps.into_iter().map(SourceFeatures::new).collect(),
+            options: hybrid,
+            last: None,
+        })
+    }
+
+    /// Places one patch (graph cut's step with the feature-guided choice).
+    pub fn step(&mut self) -> Result<Event> {
+        let features = &mut self.features;
+        let o = self.options;
+        let mut last = None;
+        let event = self.session.step_with(|s, scored| {
+            let c = choose(s, features, scored, o.feature_weight, o.candidates, o.band)?;
+            last = Some(c);
+            Some(c.patch)
+        })?;
+        self.last = last;
+        Ok(event)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::testing::sample;
+    use crate::methods::features::detect::{DetectOptions, detect};
+    use crate::methods::features::matching::{ContextFeature, Region};
+
+    #[test]
+    fn eq2_in_exemplar_coordinates_equals_the_l_shaped_cost() {
+        let ex = sample("tiles_64");
+        let map = detect(&ex, DetectOptions::default()).unwrap();
+        let mut index = FeatureIndex::new(&map);
+        let region = Region {
+            size: 24,
+            top: 6,
+            left: 6,
+        };
+        // The context: the features of the exemplar's own L at (20, 12), shifted by one pixel.
+        let context: Vec<ContextFeature> = (0..24 * 24)
+            .map(|i| (i % 24, i / 24))
+            .filter(|&(x, y)| region.contains(x, y) && map.mask[(13 + y) * 64 + 21 + x])
+            .map(|(x, y)| ContextFeature {
+                x,
+                y,
+                angle: map.angle[(13 + y) * 64 + 21 + x],
+            })
+            .collect();
+        assert!(context.len() > 5);
+        let (tx, ty) = (20, 12);
+        let l = index.cost(&context, region, tx, ty, TAU_MATCH, 12.0);
+        let points: Vec<(usize, usize, f32)> = context
+            .iter()
+            .map(|f| (tx + f.x, ty + f.y, f.angle))
+            .collect();
+        let inside = |j: usize| {
+            let (x, y) = (j % 64, j / 64);
+            x >= tx && y >= ty && region.contains(x - tx, y - ty)
+        };
+        let n = (0..64 * 64).filter(|&j| map.mask[j] && inside(j)).count() as u32;
+        let e = index.cost_in_exemplar(&points, n, inside, TAU_MATCH, 12.0);
+        assert!((l - e).abs() < 1e-6, "{l} {e}");
+        assert!(l > 0.0);
+    }
+
+    #[test]
+    fn the_frontier_is_the_made_band_next_to_unmade_pixels() {
+        let ex = sample("tiles_64");
+        let mut s = Synthesis::new(
+            &ex,
+            Options {
+                output_width: 96,
+                output_height: 80,
+                ..Options::default()
+            },
+        )
+        .unwrap();
+        s.place(
+            Patch {
+                source: 0,
+                tx: 0,
+                ty: 0,
+            },
+            &[],
+            &[],
+        )
+        .unwrap();
+        let near = frontier(&s, 5);
+        for y in 0..80 {
+            for x in 0..96 {
+                let made = x < 64 && y < 64;
+                let close = made && (x + 5 >= 64 || y + 5 >= 64);
+                assert_eq!(near[y * 96 + x], close, "({x}, {y})");
+            }
+        }
+    }
+}
