@@ -65,7 +65,8 @@ fn main() {
                         tolerance: std::env::var("TOL")
                             .map_or(0.1, |v| v.parse().expect("tolerance")),
                         feature_candidates: std::env::var("CANDIDATES")
-                            .map_or(256, |v| v.parse().expect("candidates")),
+                            .ok()
+                            .map(|v| v.parse().expect("candidates")),
                         feature_weight: std::env::var("FW")
                             .map_or(0.5, |v| v.parse().expect("weight")),
                         ..FeatureOptions::default()

@@ -214,7 +214,7 @@ fn read_options(value: &JsValue) -> JsResult<FeatureOptions> {
         tolerance: js.number("tolerance")?.map_or(d.tolerance, |v| v as f32),
         feature_candidates: js
             .integer("featureCandidates", 1, 100_000)?
-            .map_or(d.feature_candidates, |v| v as usize),
+            .map(|v| v as usize),
         extra_inputs: extra,
         detect: read_detect(&js)?,
         seed: js
@@ -225,7 +225,7 @@ fn read_options(value: &JsValue) -> JsResult<FeatureOptions> {
 
 /// Feature-guided synthesis, one patch per step: `new FeatureSynthesis(exemplar, { outputWidth:
 /// 256, outputHeight: 256, patchSize: 64, featureWeight: 0.5, warp: true, tolerance: 0.1,
-/// featureCandidates: 256, extraInputs: [], features: 'ridges', threshold: 0.9, alpha: 0.3,
+/// featureCandidates: 64 (256 for placement: 'scan'), extraInputs: [], features: 'ridges', threshold: 0.9, alpha: 0.3,
 /// seed: 1 })`.
 #[wasm_bindgen]
 pub struct FeatureSynthesis {

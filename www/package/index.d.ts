@@ -573,7 +573,7 @@ export interface FeatureSynthesisOptions extends DetectFeaturesOptions {
   warp?: boolean;
   /** Scan placement: candidates within (1 + tolerance) of the best are drawn at random, 0..10. Default: 0.1. */
   tolerance?: number;
-  /** Best candidates by colour whose feature cost is computed. Default: 256. */
+  /** Best candidates by colour whose feature cost is computed. Default: 64 for graph-cut placement, 256 for scan. */
   featureCandidates?: number;
   /** Deformed copies of the exemplar as extra inputs. Default: []. */
   extraInputs?: Array<'rotate90' | 'rotate180' | 'rotate270' | 'mirror' | 'flip'>;
