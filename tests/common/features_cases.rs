@@ -30,6 +30,7 @@ fn a_feature_map_is_detected_edited_and_used() {
             ("outputWidth", 96.into()),
             ("outputHeight", 96.into()),
             ("patchSize", 32.into()),
+            ("placement", "scan".into()),
         ]),
     )
     .unwrap();
@@ -63,9 +64,17 @@ fn a_feature_map_is_detected_edited_and_used() {
         ]),
     )
     .unwrap();
+    // The default, graph-cut placement: no warp, and the feature cost joins the choice once
+    // there is made output to match.
+    let mut priced = 0;
     while !again.done() {
-        again.step().unwrap();
+        let e = again.step().unwrap();
+        assert_eq!(get(&e, "warp").as_string().unwrap(), "none");
+        if get(&e, "featureCost").as_f64().unwrap() > 0.0 {
+            priced += 1;
+        }
     }
+    assert!(priced > 0, "graph-cut placement priced features");
     let out2 = Uint8ClampedArray::new_with_length(96 * 96 * 4);
     again.render_into(&out2).unwrap();
     let mut third = FeatureSynthesis::with_feature_map(
@@ -75,6 +84,7 @@ fn a_feature_map_is_detected_edited_and_used() {
             ("outputWidth", 96.into()),
             ("outputHeight", 96.into()),
             ("patchSize", 32.into()),
+            ("placement", "scan".into()),
         ]),
     )
     .unwrap();
