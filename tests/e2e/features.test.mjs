@@ -41,9 +41,11 @@ test('feature-guided synthesis runs beside plain graph cut with both broken-feat
   assert.match(await page.textContent('#fg-readout'), /patch 2\/\d+ .* context features .* warp: /);
   await page.click('#run');
   await page.waitForSelector('body[data-features-done="true"]', { timeout: 120_000 });
-  const ours = Number(await page.getAttribute('#fg-quality', 'data-broken'));
-  const theirs = Number(await page.getAttribute('#fg-graphcut-caption', 'data-broken'));
+  // getAttribute gives null for a missing attribute, and Number(null) is a finite 0.
+  const ours = Number(await page.getAttribute('#fg-quality', 'data-broken') ?? NaN);
+  const theirs = Number(await page.getAttribute('#fg-graphcut-caption', 'data-broken') ?? NaN);
   assert.ok(Number.isFinite(ours) && Number.isFinite(theirs), `${ours} ${theirs}`);
+  assert.doesNotMatch(await page.textContent('#fg-graphcut-caption'), /NaN/);
   const pixels = await canvasPixels(page, 'fg-map');
   assert.ok(pixels.some((v, i) => i % 4 === 3 && v === 255), 'the synthesised feature map is drawn');
   await page.screenshot({ path: `${RESULTS}/features.png`, fullPage: true });

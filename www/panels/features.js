@@ -204,7 +204,8 @@ export function createPanel(ui) {
         const current = synthesis;
         const event = await current.step();
         if (synthesis !== current) return null; // reset while the step ran
-        return { ...event, phase: 'features', done: event.done && !compare };
+        // The run goes on to the comparison, so only the last event of both is `done`.
+        return { ...event, phase: 'features', featuresDone: event.done, done: event.done && !compare };
       }
       if (!compare) return null;
       if (!graphcut) {
@@ -228,7 +229,7 @@ export function createPanel(ui) {
         ui.$('fg-readout').textContent = `patch ${event.patch + 1}/${event.patches} from (${event.sourceX}, ${event.sourceY}) · ` +
           `${event.contextFeatures} context features · ${event.correspondences} correspondences · warp: ${event.warp} · ${how}`;
         document.body.dataset.featurePatches = String(event.patch + 1);
-        if (event.done) {
+        if (event.featuresDone) {
           const b = broken(synthesis);
           const quality = ui.$('fg-quality');
           quality.dataset.broken = String(b);
