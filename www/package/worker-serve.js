@@ -12,12 +12,22 @@
 //   quality                     measureQuality of the current output against the session's exemplar
 //   free
 // Any class the package exports can be made here (a session added in Rust needs nothing in this
-// file); constructor arguments of the form { bytes } or { rgba, width, height } become Exemplars.
+// file); constructor arguments of the form { bytes } or { rgba, width, height } become Exemplars,
+// and { clip: { width, height, frames, rgba } } a VideoClip.
 const isExemplarWire = (a) =>
   a !== null && typeof a === 'object' && !ArrayBuffer.isView(a) && !Array.isArray(a) &&
   (('bytes' in a && Object.keys(a).length === 1) || ('rgba' in a && 'width' in a && 'height' in a && Object.keys(a).length === 3));
 
+// A video clip travels as { clip: { width, height, frames, rgba } } (the frames' RGBA one after the
+// other) and becomes a VideoClip.
+const isClipWire = (a) => a !== null && typeof a === 'object' && Object.keys(a).length === 1 && a.clip?.rgba !== undefined;
+
 export function serve(lib, { post, listen }) {
+  const toClip = ({ clip }) => {
+    if (!lib.VideoClip) throw new Error('this build has no video textures (VideoClip)');
+    const rgba = clip.rgba instanceof Uint8Array ? clip.rgba : new Uint8Array(clip.rgba.buffer ?? clip.rgba);
+    return lib.VideoClip.fromFrames(clip.width, clip.height, clip.frames, rgba);
+  };
   const sessions = new Map();
   const exemplars = new Map();
   const running = new Map();
@@ -96,8 +106,10 @@ export function serve(lib, { post, listen }) {
         if (typeof Cls !== 'function' || !/^[A-Z]/.test(message.kind) || message.kind === 'Exemplar' || !Cls.prototype?.free) {
           throw new Error(`unknown session kind '${message.kind}'`);
         }
-        const args = message.args.map((a) => (isExemplarWire(a) ? toExemplar(a) : a));
+        const args = message.args.map((a) => (isExemplarWire(a) ? toExemplar(a) : isClipWire(a) ? toClip(a) : a));
         const session = new Cls(...args);
+        // A clip has been copied into the session.
+        for (const a of args) if (lib.VideoClip && a instanceof lib.VideoClip) a.free();
         // The exemplar stays for `quality`; the others are freed.
         const [exemplar, ...others] = args.filter((a) => a instanceof lib.Exemplar);
         for (const a of others) a.free();

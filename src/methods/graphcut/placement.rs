@@ -5,7 +5,7 @@
 use super::canvas::{Patch, UNCOVERED};
 use super::options::Placement;
 use super::synthesis::Synthesis;
-use crate::core::Result;
+use crate::core::{Image, Result};
 use crate::solvers::fft_ssd::Boundary;
 
 /// A rectangle of the output (it may run past the right or bottom border when wrapping).
@@ -140,21 +140,6 @@ impl Synthesis {
         }
         let (w, h) = (self.canvas.width, self.canvas.height);
         let sub_patch = self.options.placement == Placement::SubPatch;
-        // Weights on the output: covered pixels (eq. 2), and only inside the error region (the
-        // output sub-patch of eq. 4) for sub-patch matching.
-        let mut weights = vec![0.0f32; w * h];
-        for (i, weight) in weights.iter_mut().enumerate() {
-            let inside =
-                !sub_patch || region_contains(region, i % w, i / w, w, h, self.canvas.wrap);
-            if inside && self.canvas.label[i] != UNCOVERED {
-                *weight = 1.0;
-            }
-        }
-        let boundary = if self.canvas.wrap {
-            Boundary::Periodic
-        } else {
-            Boundary::Open
-        };
         let mut scored = Vec::with_capacity(candidates.len());
         for s in 0..self.sources.len() {
             let of_source: Vec<Patch> = candidates
@@ -167,19 +152,25 @@ impl Synthesis {
             }
             let (pw, ph) = self.patch_extent(s);
             let patch_image = self.sources[s].image.crop(0, 0, pw, ph)?;
-            // Keyed by source: its transforms are computed once per synthesis, not per placement.
+            let window = SearchWindow::around(region, (pw, ph), (w, h), self.canvas.wrap);
+            // Weights on the output: covered pixels (eq. 2), and only inside the error region
+            // (the output sub-patch of eq. 4) for sub-patch matching.
+            let (pixels, weights) = window.gather(&self.canvas, |x, y| {
+                !sub_patch || region_contains(region, x, y, w, h, self.canvas.wrap)
+            })?;
+            // Keyed by source: its transforms are computed once per synthesis, not per placement
+            // (the window's size depends on the patch and the region only, so it never changes).
             let map = self.ssd.search_keyed(
-                &self.canvas.pixels,
+                &pixels,
                 Some(&weights),
                 &patch_image,
                 None,
-                boundary,
+                window.boundary,
                 Some(s as u64),
             )?;
             for patch in of_source {
-                let (cost, area) = map
-                    .get(patch.tx as isize, patch.ty as isize)
-                    .unwrap_or((0.0, 0.0));
+                let (ox, oy) = window.offset(patch, (w, h));
+                let (cost, area) = map.get(ox, oy).unwrap_or((0.0, 0.0));
                 // Area-normalised (eq. 2); for sub-patches too, so that k means the same thing.
                 let cost = if area > 0.5 {
                     cost / area
@@ -235,6 +226,108 @@ pub fn region_contains(region: Region, x: usize, y: usize, w: usize, h: usize, w
         }
     };
     inside(x, region.x, region.width, w) && inside(y, region.y, region.height, h)
+}
+
+/// The part of the output a placement's search looks at: every offset whose patch covers the
+/// error region lies in `[x1 - pw, x0]` along x (likewise y), so its patches span a window of
+/// `2 pw - region width` by `2 ph - region height` pixels. Searching that window instead of the
+/// whole output makes a placement cost the same at 256x256 and 4096x4096 (issue 17). A wrapping
+/// output whose window would be wider than the output itself is searched whole, as a torus.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SearchWindow {
+    /// Top-left corner in output coordinates (negative or past the border where the patches
+    /// reach outside the output).
+    pub x: i64,
+    pub y: i64,
+    pub width: usize,
+    pub height: usize,
+    pub boundary: Boundary,
+}
+
+impl SearchWindow {
+    #[must_use]
+    pub fn around(
+        region: Region,
+        (pw, ph): (usize, usize),
+        (w, h): (usize, usize),
+        wrap: bool,
+    ) -> SearchWindow {
+        let width = (2 * pw).saturating_sub(region.width).max(1);
+        let height = (2 * ph).saturating_sub(region.height).max(1);
+        if wrap && (width > w || height > h) {
+            return SearchWindow {
+                x: 0,
+                y: 0,
+                width: w,
+                height: h,
+                boundary: Boundary::Periodic,
+            };
+        }
+        SearchWindow {
+            x: (region.x + region.width) as i64 - pw as i64,
+            y: (region.y + region.height) as i64 - ph as i64,
+            width,
+            height,
+            boundary: Boundary::Open,
+        }
+    }
+
+    /// The window's pixels and weights: 1 on covered pixels where `keep(x, y)` (output
+    /// coordinates), 0 elsewhere and outside a non-wrapping output.
+    pub fn gather(
+        &self,
+        canvas: &super::canvas::Canvas,
+        keep: impl Fn(usize, usize) -> bool,
+    ) -> Result<(Image, Vec<f32>)> {
+        let channels = canvas.pixels.channels();
+        let mut data = vec![0.0f32; self.width * self.height * channels];
+        let mut weights = vec![0.0f32; self.width * self.height];
+        let (w, h) = (canvas.width as i64, canvas.height as i64);
+        let source = canvas.pixels.data();
+        for j in 0..self.height {
+            let y = self.y + j as i64;
+            let y = if canvas.wrap { y.rem_euclid(h) } else { y };
+            if !(0..h).contains(&y) {
+                continue;
+            }
+            for i in 0..self.width {
+                let x = self.x + i as i64;
+                let x = if canvas.wrap { x.rem_euclid(w) } else { x };
+                if !(0..w).contains(&x) {
+                    continue;
+                }
+                let (x, y) = (x as usize, y as usize);
+                let at = y * canvas.width + x;
+                if canvas.label[at] == UNCOVERED || !keep(x, y) {
+                    continue;
+                }
+                let k = j * self.width + i;
+                weights[k] = 1.0;
+                data[k * channels..(k + 1) * channels]
+                    .copy_from_slice(&source[at * channels..(at + 1) * channels]);
+            }
+        }
+        Ok((
+            Image::from_vec(self.width, self.height, channels, data)?,
+            weights,
+        ))
+    }
+
+    /// Where `patch` sits in the search map of this window.
+    #[must_use]
+    pub fn offset(&self, patch: Patch, (w, h): (usize, usize)) -> (isize, isize) {
+        let (tx, ty) = (i64::from(patch.tx), i64::from(patch.ty));
+        match self.boundary {
+            Boundary::Periodic => (tx as isize, ty as isize),
+            // A wrapped offset was reduced modulo the output size; inside the window it is the
+            // distance from the window's corner, which is below the output size.
+            Boundary::Open if self.width <= w && self.height <= h => (
+                (tx - self.x).rem_euclid(w as i64) as isize,
+                (ty - self.y).rem_euclid(h as i64) as isize,
+            ),
+            Boundary::Open => ((tx - self.x) as isize, (ty - self.y) as isize),
+        }
+    }
 }
 
 /// Sum of `values` over every `side` x `side` window, indexed by the window's top-left corner.

@@ -64,6 +64,11 @@ impl Session {
         &self.synthesis
     }
 
+    /// The synthesis, for tests and tools that score or place by hand between steps.
+    pub fn synthesis_mut(&mut self) -> &mut Synthesis {
+        &mut self.synthesis
+    }
+
     #[must_use]
     pub fn is_done(&self) -> bool {
         self.finished

@@ -281,68 +281,74 @@ fn same_seed_same_output() {
     assert_ne!(a, c);
 }
 
+/// The search looks only at the window the candidates' patches can reach (issue 17): on outputs
+/// much larger than that window, wrapping or not, before and after the output is covered, for
+/// entire-patch and sub-patch matching, every candidate's cost is the direct area-normalised SSD
+/// over the whole output.
 #[test]
 fn matching_costs_equal_a_direct_area_normalised_ssd() {
+    use super::placement::region_contains;
     let exemplar = noise(16, 12, 3, 3);
-    let mut s = Synthesis::new(
-        &exemplar,
-        Options {
-            output_width: 30,
-            output_height: 24,
-            ..Options::default()
-        },
-    )
-    .unwrap();
-    s.place(
-        Patch {
-            source: 0,
-            tx: 0,
-            ty: 0,
-        },
-        &[],
-        &[],
-    )
-    .unwrap();
-    s.place(
-        Patch {
-            source: 0,
-            tx: 10,
-            ty: 4,
-        },
-        &[],
-        &[],
-    )
-    .unwrap();
-    let region = s.error_region();
-    let candidates = s.candidates(region);
-    assert!(!candidates.is_empty());
-    let scored = s.score(region, &candidates).unwrap();
-    let w = s.canvas.width;
-    for c in scored.iter().step_by(7) {
-        let (mut sum, mut area) = (0.0f64, 0.0f64);
-        for i in s.footprint(c.patch) {
-            if s.canvas.label[i] == UNCOVERED {
-                continue;
-            }
-            let (sx, sy) = s
-                .canvas
-                .source_coords(c.patch, &s.sources[0], i % w, i / w)
+    for wrap in [false, true] {
+        for placement in [Placement::EntirePatch, Placement::SubPatch] {
+            for (ow, oh, steps) in [(30, 24, 2), (72, 56, 3), (40, 30, 40)] {
+                let mut session = Session::new(
+                    &exemplar,
+                    Options {
+                        output_width: ow,
+                        output_height: oh,
+                        placement,
+                        tileable: wrap,
+                        ..Options::default()
+                    },
+                )
                 .unwrap();
-            let a = s.canvas.pixels.pixel(i % w, i / w);
-            let b = s.sources[0].image.pixel(sx, sy);
-            sum += a
-                .iter()
-                .zip(b)
-                .map(|(x, y)| f64::from(x - y).powi(2))
-                .sum::<f64>();
-            area += 1.0;
+                for _ in 0..steps {
+                    session.step().unwrap();
+                }
+                let s = session.synthesis_mut();
+                let region = s.error_region();
+                let candidates = s.candidates(region);
+                assert!(!candidates.is_empty());
+                let scored = s.score(region, &candidates).unwrap();
+                let (w, h) = (s.canvas.width, s.canvas.height);
+                for c in &scored {
+                    let (mut sum, mut area) = (0.0f64, 0.0f64);
+                    for i in s.footprint(c.patch) {
+                        let (x, y) = (i % w, i / w);
+                        if s.canvas.label[i] == UNCOVERED
+                            || (placement == Placement::SubPatch
+                                && !region_contains(region, x, y, w, h, wrap))
+                        {
+                            continue;
+                        }
+                        let (sx, sy) = s
+                            .canvas
+                            .source_coords(c.patch, &s.sources[0], x, y)
+                            .unwrap();
+                        let a = s.canvas.pixels.pixel(x, y);
+                        let b = s.sources[0].image.pixel(sx, sy);
+                        sum += a
+                            .iter()
+                            .zip(b)
+                            .map(|(x, y)| f64::from(x - y).powi(2))
+                            .sum::<f64>();
+                        area += 1.0;
+                    }
+                    if area < 1.0 {
+                        assert!(c.cost.is_infinite(), "no overlap is no match");
+                        continue;
+                    }
+                    let direct = (sum / area) as f32;
+                    assert!(
+                        (c.cost - direct).abs() < 1e-3 * direct.max(1e-3),
+                        "{ow}x{oh} wrap {wrap} {placement:?} {:?}: fft {} vs direct {direct}",
+                        c.patch,
+                        c.cost
+                    );
+                }
+            }
         }
-        let direct = (sum / area) as f32;
-        assert!(
-            (c.cost - direct).abs() < 1e-3 * direct.max(1e-3),
-            "fft {} vs direct {direct}",
-            c.cost
-        );
     }
 }
 

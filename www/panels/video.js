@@ -1,0 +1,307 @@
+// The "Video textures" panel (Kwatra et al. 2003, section 7): graph-cut textures over an
+// (x, y, t) volume. A clip comes in (the built-in demo clip, a video file decoded frame by frame,
+// or an image sequence), each step places one spatio-temporal patch along a minimum-cut seam
+// surface, and the page shows the frame the patch landed in with the seam drawn over it, an x-t
+// slice through the volume where the seams show where in time the cut falls, and the loop point
+// with the frames on either side of it. When the synthesis is done the output plays in a loop and
+// can be recorded as WebM.
+import { clipFromImages, clipFromStrip, clipFromVideo, loadImage } from '../lib/video-input.js';
+import { recordFrames } from '../lib/record.js';
+import { remoteSession } from '../lib/worker.js';
+
+export const id = 'video';
+export const title = 'Video textures';
+
+const DEMO_CLIP = './samples/clips/water.png';
+const PLAYBACK_FPS = 15;
+
+const OPTIONS_HTML = `
+  <label>Clip <select id="vt-source">
+    <option value="demo">demo: water (128×128, 60 frames)</option>
+    <option value="file">a video file or image sequence…</option>
+  </select></label>
+  <input id="vt-file" type="file" accept="video/*,image/*" multiple hidden>
+  <label title="frames are scaled to this size before synthesis">size <input id="vt-size" type="number" value="64" min="16" max="256" step="8"></label>
+  <label title="frames taken from the clip">frames <input id="vt-frames" type="number" value="40" min="4" max="240" step="1"></label>
+  <label>Mode <select id="vt-mode">
+    <option value="loop">loop (7.A, 7.D)</option>
+    <option value="offsets">random temporal offsets (7.B)</option>
+    <option value="extend">spatial extension (7.E)</option>
+  </select></label>
+  <label>Placement <select id="vt-placement">
+    <option value="random">random</option>
+    <option value="matching">spatio-temporal matching (7.C)</option>
+  </select></label>
+  <label title="output frames; 0: as many as the clip">out frames <input id="vt-out-frames" type="number" value="0" min="0" max="480" step="1"></label>
+  <label title="frames held fixed at both ends while a loop is made (7.D)">k <input id="vt-fixed" type="number" value="10" min="0" max="60" step="1"></label>
+  <label class="views" title="the row the x-t slice is taken at">slice row <input id="vt-row" class="view" type="range" min="0" max="63" value="32"></label>
+  <button id="vt-record" type="button" class="view">Record WebM</button>
+  <a id="vt-download" hidden download="texsynth-video.webm">download video</a>`;
+
+const SIDE_HTML = `
+  <div class="readout" id="vt-readout">press Run or Step</div>
+  <div class="side-row">
+    <figure><canvas id="vt-playback" width="128" height="128" aria-label="Output, playing"></canvas>
+      <figcaption id="vt-playback-caption">output, looping</figcaption></figure>
+    <figure><canvas id="vt-input" width="128" height="128" aria-label="Input clip, playing"></canvas>
+      <figcaption id="vt-input-caption">input clip</figcaption></figure>
+  </div>
+  <figure><canvas id="vt-slice" class="slice" width="128" height="60" aria-label="x-t slice with seams"></canvas>
+    <figcaption id="vt-slice-caption">x-t slice (x across, time down), seams in orange</figcaption></figure>
+  <div class="side-row">
+    <figure><canvas id="vt-loop-last" width="64" height="64" aria-label="Last frame"></canvas>
+      <figcaption>last frame</figcaption></figure>
+    <figure><canvas id="vt-loop-first" width="64" height="64" aria-label="First frame"></canvas>
+      <figcaption>first frame</figcaption></figure>
+  </div>
+  <p class="legend" id="vt-loop-caption">The loop point: the last frame is followed by the first.</p>`;
+
+export function createPanel(ui) {
+  let clip = null;
+  let clipKey = null;
+  let session = null;
+  let pending = null;
+  let output = [];
+  let inputFrames = [];
+  let playTimer = null;
+  let playIndex = 0;
+  let recording = false;
+  let shownFrame = 0;
+
+  const size = () => Math.min(256, Math.max(16, Math.round(Number(ui.$('vt-size').value) || 64)));
+  const frameCount = () => Math.min(240, Math.max(4, Math.round(Number(ui.$('vt-frames').value) || 40)));
+
+  /** The clip at the chosen size, decoded once per source and size. */
+  async function loadClip() {
+    const files = ui.$('vt-file').files;
+    const fromFile = ui.$('vt-source').value === 'file' && files.length > 0;
+    const key = `${fromFile ? [...files].map((f) => f.name).join('|') : 'demo'}:${size()}:${frameCount()}`;
+    if (clip && clipKey === key) return clip;
+    const s = size();
+    let loaded;
+    if (!fromFile) {
+      loaded = clipFromStrip(await loadImage(DEMO_CLIP), { width: s, height: s });
+    } else if (files.length === 1 && files[0].type.startsWith('video/')) {
+      loaded = await clipFromVideo(files[0], {
+        width: s, height: s, frames: frameCount(),
+        onProgress: (t, n) => { ui.$('vt-readout').textContent = `decoding frame ${t}/${n}…`; },
+      });
+    } else {
+      loaded = await clipFromImages(files, { width: s, height: s });
+    }
+    if (loaded.frames > frameCount()) {
+      const bytes = loaded.width * loaded.height * 4;
+      loaded = { ...loaded, frames: frameCount(), rgba: loaded.rgba.slice(0, bytes * frameCount()) };
+    }
+    clip = loaded;
+    clipKey = key;
+    inputFrames = framesOf(clip);
+    ui.$('vt-input-caption').textContent = `input clip: ${clip.width}×${clip.height}, ${clip.frames} frames`;
+    return clip;
+  }
+
+  function options() {
+    const outFrames = Math.round(Number(ui.$('vt-out-frames').value) || 0);
+    const mode = ui.$('vt-mode').value;
+    const o = {
+      mode,
+      placement: ui.$('vt-placement').value,
+      fixedFrames: Math.round(Number(ui.$('vt-fixed').value) || 0),
+      seed: ui.seed(),
+    };
+    if (outFrames > 0) o.outputFrames = outFrames;
+    if (mode === 'extend') {
+      o.outputWidth = 2 * size();
+      o.outputHeight = 2 * size();
+    }
+    return o;
+  }
+
+  async function ensureSession() {
+    pending ??= (async () => {
+      const c = await loadClip();
+      const wire = { clip: { width: c.width, height: c.height, frames: c.frames, rgba: c.rgba } };
+      return remoteSession('VideoTextures', [wire, options()], { getters: ['frames'] });
+    })();
+    const current = pending;
+    try {
+      const created = await current;
+      if (pending !== current) return null;
+      session = created;
+      return session;
+    } catch (error) {
+      if (pending === current) pending = null;
+      throw error;
+    }
+  }
+
+  const frameImage = (bytes, width, height) =>
+    new ImageData(new Uint8ClampedArray(bytes.buffer, bytes.byteOffset, bytes.length), width, height);
+
+  /** The output frame `t` with its seams drawn over it, on the main canvas. */
+  async function drawFrame(t) {
+    const { width, height } = session;
+    const [frame, seams] = await Promise.all([session.send('frame', t), session.send('seams', t)]);
+    const canvas = ui.outputCanvas;
+    if (canvas.width !== width || canvas.height !== height) {
+      canvas.width = width;
+      canvas.height = height;
+    }
+    const ctx = canvas.getContext('2d');
+    ctx.putImageData(frameImage(frame, width, height), 0, 0);
+    const layer = document.createElement('canvas');
+    layer.width = width;
+    layer.height = height;
+    layer.getContext('2d').putImageData(frameImage(seams, width, height), 0, 0);
+    ctx.drawImage(layer, 0, 0);
+    shownFrame = t;
+  }
+
+  /** The x-t slice at the chosen row: x across, one line per frame, seams drawn. */
+  async function drawSlice() {
+    if (!session) return;
+    const frames = session.getter('frames');
+    const row = Math.min(session.height - 1, Number(ui.$('vt-row').value));
+    const slice = await session.send('sliceXt', row);
+    const canvas = ui.$('vt-slice');
+    canvas.width = session.width;
+    canvas.height = frames;
+    canvas.getContext('2d').putImageData(frameImage(slice, session.width, frames), 0, 0);
+    ui.$('vt-slice-caption').textContent = `x-t slice at row ${row} (x across, frames 1-${frames} down), seams in orange`;
+  }
+
+  async function drawLoopPoint(loopFrame) {
+    const frames = session.getter('frames');
+    const last = loopFrame >= 0 ? loopFrame : frames - 1;
+    const first = (last + 1) % frames;
+    const [a, b] = await Promise.all([session.send('frame', last), session.send('frame', first)]);
+    show(ui.$('vt-loop-last'), frameImage(a, session.width, session.height));
+    show(ui.$('vt-loop-first'), frameImage(b, session.width, session.height));
+    ui.$('vt-loop-caption').textContent = `The loop point: frame ${last + 1} is followed by frame ${first + 1}.`;
+  }
+
+  async function collectOutput() {
+    const frames = session.getter('frames');
+    output = [];
+    for (let t = 0; t < frames; t++) output.push(frameImage(await session.send('frame', t), session.width, session.height));
+    ui.$('vt-playback-caption').textContent = `output: ${session.width}×${session.height}, ${frames} frames, looping`;
+    document.body.dataset.videoFrames = String(frames);
+  }
+
+  function startPlayback() {
+    if (playTimer) return;
+    playTimer = setInterval(() => {
+      if (recording) return;
+      playIndex++;
+      if (output.length > 0) show(ui.$('vt-playback'), output[playIndex % output.length]);
+      if (inputFrames.length > 0) show(ui.$('vt-input'), inputFrames[playIndex % inputFrames.length]);
+      if (output.length > 0) document.body.dataset.videoPlayed = String(playIndex);
+    }, 1000 / PLAYBACK_FPS);
+  }
+
+  async function record() {
+    if (output.length < 2 || recording) return;
+    recording = true;
+    ui.$('vt-record').disabled = true;
+    ui.$('vt-record').textContent = 'recording…';
+    try {
+      // Twice round, so the video itself shows the loop point.
+      const blob = await recordFrames(ui.$('vt-playback'), [...output, ...output], PLAYBACK_FPS, show);
+      const link = ui.$('vt-download');
+      if (link.href) URL.revokeObjectURL(link.href);
+      link.href = URL.createObjectURL(blob);
+      link.textContent = `download video (${output.length} frames twice, ${(blob.size / 1024).toFixed(0)} KB WebM)`;
+      link.hidden = false;
+      document.body.dataset.recordedBytes = String(blob.size);
+    } catch (error) {
+      ui.$('vt-readout').textContent = `recording failed: ${error.message ?? error}`;
+    } finally {
+      recording = false;
+      ui.$('vt-record').disabled = false;
+      ui.$('vt-record').textContent = 'Record WebM';
+    }
+  }
+
+  return {
+    id,
+    title,
+    optionsHtml: OPTIONS_HTML,
+    sideHtml: SIDE_HTML,
+    mount() {
+      ui.$('vt-record').addEventListener('click', record);
+      ui.$('vt-row').addEventListener('input', () => drawSlice().catch(() => {}));
+      ui.$('vt-source').addEventListener('change', () => {
+        if (ui.$('vt-source').value === 'file') ui.$('vt-file').click();
+      });
+      ui.$('vt-file').addEventListener('change', () => {
+        ui.$('vt-source').value = 'file';
+        clip = null;
+        this.reset();
+      });
+      startPlayback();
+    },
+    unmount() {
+      clearInterval(playTimer);
+      playTimer = null;
+    },
+    async step() {
+      const current = await ensureSession();
+      if (!current || current.done) return null;
+      const event = await current.step();
+      return current === session ? event : null;
+    },
+    onStep(event) {
+      // The runner does not wait for drawing; a failed fetch is shown, not thrown.
+      this.draw(event).catch((error) => { ui.$('vt-readout').textContent = `drawing failed: ${error.message ?? error}`; });
+    },
+    async draw(event) {
+      const frames = session.getter('frames');
+      const t = Math.min(frames - 1, Math.max(0, event.tt + Math.floor(clip.frames / 2)));
+      ui.$('vt-row').max = String(session.height - 1);
+      ui.$('vt-readout').textContent =
+        `patch ${event.patch + 1} at (x ${event.tx}, y ${event.ty}, t ${event.tt}) · ${event.voxelsTaken} voxels taken · ` +
+        `cut cost ${event.cutCost.toPrecision(3)}${event.covered ? ' · refining' : ''} · showing frame ${t + 1}/${frames}`;
+      await drawFrame(t);
+      await drawSlice();
+      document.body.dataset.videoPatches = String(event.patch + 1);
+      if (event.done) {
+        await drawLoopPoint(event.loopFrame ?? -1);
+        await collectOutput();
+        document.body.dataset.videoDone = 'true';
+      }
+    },
+    reset() {
+      pending?.then((s) => s?.free(), () => {});
+      pending = null;
+      session = null;
+      output = [];
+      playIndex = 0;
+      delete document.body.dataset.videoDone;
+      delete document.body.dataset.recordedBytes;
+      document.body.dataset.videoPatches = '0';
+      ui.$('vt-readout').textContent = 'press Run or Step';
+      ui.$('vt-download').hidden = true;
+      for (const id of ['vt-playback', 'vt-slice', 'vt-loop-last', 'vt-loop-first']) {
+        const c = ui.$(id);
+        c.getContext('2d').clearRect(0, 0, c.width, c.height);
+      }
+      const ctx = ui.outputCanvas.getContext('2d');
+      ctx.clearRect(0, 0, ui.outputCanvas.width, ui.outputCanvas.height);
+      loadClip().catch((error) => { ui.$('vt-readout').textContent = error.message; });
+    },
+  };
+}
+
+function framesOf(clip) {
+  const bytes = clip.width * clip.height * 4;
+  return Array.from({ length: clip.frames }, (_, t) =>
+    new ImageData(new Uint8ClampedArray(clip.rgba.buffer, clip.rgba.byteOffset + t * bytes, bytes), clip.width, clip.height));
+}
+
+function show(canvas, image) {
+  if (canvas.width !== image.width || canvas.height !== image.height) {
+    canvas.width = image.width;
+    canvas.height = image.height;
+  }
+  canvas.getContext('2d').putImageData(image, 0, 0);
+}
