@@ -1,6 +1,7 @@
 //! Native benchmark of graph-cut textures: `cargo run --release --example bench_graphcut`.
 //! Synthesises 256x256 from the samples with each placement mode and prints total time, time per
-//! placement (median, max), patches placed and the final total seam cost. `scripts/bench.sh` runs
+//! placement (median, max), patches placed and the final total seam cost. `BENCH_SIZE=1024` and
+//! `BENCH_PLACEMENTS=entire-patch,sub-patch` pick the output size and placements. `scripts/bench.sh` runs
 //! this and the same cases as wasm in Node. `BENCH_WRITE=dir` also writes the outputs as PNGs.
 
 use std::time::Instant;
@@ -10,8 +11,21 @@ use texsynth::methods::graphcut::{Options, Placement, Session};
 
 fn main() {
     let samples = std::env::var("BENCH_SAMPLES").unwrap_or_else(|_| "gravel_128,gravel_64".into());
+    let size: usize = std::env::var("BENCH_SIZE").map_or(256, |v| v.parse().expect("BENCH_SIZE"));
+    let placements: Vec<Placement> = std::env::var("BENCH_PLACEMENTS").map_or(
+        vec![
+            Placement::Random,
+            Placement::EntirePatch,
+            Placement::SubPatch,
+        ],
+        |v| {
+            v.split(',')
+                .map(|p| Placement::from_name(p).expect("random, entire-patch or sub-patch"))
+                .collect()
+        },
+    );
     println!(
-        "native graph-cut textures, 256x256 output, default options (seed 1, 24 refinement patches)"
+        "native graph-cut textures, {size}x{size} output, default options (seed 1, 24 refinement patches)"
     );
     println!(
         "{:<12} {:<13} {:>8} {:>9} {:>10} {:>10} {:>12}",
@@ -21,16 +35,14 @@ fn main() {
         let path = format!("{}/www/samples/{name}.png", env!("CARGO_MANIFEST_DIR"));
         let exemplar =
             decode(&std::fs::read(&path).expect("sample exists")).expect("sample decodes");
-        for placement in [
-            Placement::Random,
-            Placement::EntirePatch,
-            Placement::SubPatch,
-        ] {
+        for &placement in &placements {
             let start = Instant::now();
             let mut session = Session::new(
                 &exemplar,
                 Options {
                     placement,
+                    output_width: size,
+                    output_height: size,
                     ..Options::default()
                 },
             )

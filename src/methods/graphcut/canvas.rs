@@ -33,6 +33,13 @@ pub struct Canvas {
     /// Seam cost of the edge between (x, y) and the pixel below.
     pub v_seam: Vec<f32>,
     pub covered: usize,
+    /// No pixel before this index is uncovered: labels only ever go from uncovered to covered,
+    /// so the scan for the first uncovered pixel resumes here instead of at 0 (a scan from 0 at
+    /// every placement made covering a 4096x4096 output quadratic).
+    first_uncovered_from: std::cell::Cell<usize>,
+    /// The sum of `h_seam` and `v_seam`, kept by [`Canvas::set_seam`] so that each step's event
+    /// does not add up the whole output again.
+    seam_total: f64,
 }
 
 impl Canvas {
@@ -47,7 +54,22 @@ impl Canvas {
             h_seam: vec![0.0; width * height],
             v_seam: vec![0.0; width * height],
             covered: 0,
+            first_uncovered_from: std::cell::Cell::new(0),
+            seam_total: 0.0,
         })
+    }
+
+    /// The first uncovered pixel in scan order.
+    #[must_use]
+    pub fn first_uncovered(&self) -> Option<usize> {
+        let from = self.first_uncovered_from.get().min(self.label.len());
+        let found = self.label[from..]
+            .iter()
+            .position(|&l| l == UNCOVERED)
+            .map(|k| from + k);
+        self.first_uncovered_from
+            .set(found.unwrap_or(self.label.len()));
+        found
     }
 
     #[must_use]
@@ -125,11 +147,19 @@ impl Canvas {
     /// Sum of every seam cost in the output.
     #[must_use]
     pub fn total_seam_cost(&self) -> f64 {
-        self.h_seam
-            .iter()
-            .chain(&self.v_seam)
-            .map(|&c| f64::from(c))
-            .sum()
+        self.seam_total
+    }
+
+    /// Remembers the seam cost of the edge from pixel `s` to its right (`horizontal`) or lower
+    /// neighbour.
+    pub fn set_seam(&mut self, s: usize, horizontal: bool, cost: f32) {
+        let slot = if horizontal {
+            &mut self.h_seam[s]
+        } else {
+            &mut self.v_seam[s]
+        };
+        self.seam_total += f64::from(cost) - f64::from(*slot);
+        *slot = cost;
     }
 
     /// 1 where a pixel's right or lower neighbour comes from a different patch (the seam map).

@@ -37,12 +37,7 @@ impl Synthesis {
         let (w, h) = (self.canvas.width, self.canvas.height);
         let clamp = |c: usize, len: usize| c.saturating_sub(side / 2).min(len - side);
         if !self.canvas.is_covered() {
-            let first = self
-                .canvas
-                .label
-                .iter()
-                .position(|&l| l == UNCOVERED)
-                .expect("not covered");
+            let first = self.canvas.first_uncovered().expect("not covered");
             let (x, y) = (first % w, first / w);
             return Region {
                 x: clamp(x, w),

@@ -39,11 +39,28 @@ impl Synthesis {
     ) -> Result<Placed> {
         let footprint = self.footprint(patch);
         let (w, h) = (self.canvas.width, self.canvas.height);
-        // Node of every output pixel under the patch.
-        let mut node_of = vec![u32::MAX; w * h];
+        // Node of every output pixel under the patch, indexed within the patch's rectangle: a
+        // table the size of the output would cost as much to clear as a 4096x4096 output has
+        // pixels, at every placement.
+        let (pw, ph) = self.patch_extent(patch.source as usize);
+        let wrap = self.canvas.wrap;
+        let local = |j: usize| -> Option<usize> {
+            let (mut u, mut v) = (
+                (j % w) as i64 - i64::from(patch.tx),
+                (j / w) as i64 - i64::from(patch.ty),
+            );
+            if wrap {
+                u = u.rem_euclid(w as i64);
+                v = v.rem_euclid(h as i64);
+            }
+            ((0..pw as i64).contains(&u) && (0..ph as i64).contains(&v))
+                .then(|| v as usize * pw + u as usize)
+        };
+        let mut nodes = vec![u32::MAX; pw * ph];
         for (n, &i) in footprint.iter().enumerate() {
-            node_of[i] = n as u32;
+            nodes[local(i).expect("footprint pixels lie under the patch")] = n as u32;
         }
+        let node_of = |j: usize| local(j).map_or(u32::MAX, |k| nodes[k]);
         let mut graph = Graph::with_capacity(footprint.len(), 2 * footprint.len())?;
         let canvas = &self.canvas;
         let covered = |i: usize| canvas.label[i] != UNCOVERED;
@@ -56,26 +73,26 @@ impl Synthesis {
             if neighbours
                 .into_iter()
                 .flatten()
-                .any(|j| node_of[j] == u32::MAX && covered(j))
+                .any(|j| node_of(j) == u32::MAX && covered(j))
             {
                 graph.add_terminal(n, HARD_CONSTRAINT, 0.0)?;
             }
         }
         for &i in keep_old
             .iter()
-            .filter(|&&i| node_of[i] != u32::MAX && covered(i))
+            .filter(|&&i| node_of(i) != u32::MAX && covered(i))
         {
-            graph.add_terminal(node_of[i] as usize, HARD_CONSTRAINT, 0.0)?;
+            graph.add_terminal(node_of(i) as usize, HARD_CONSTRAINT, 0.0)?;
         }
-        for &i in force_new.iter().filter(|&&i| node_of[i] != u32::MAX) {
-            graph.add_terminal(node_of[i] as usize, 0.0, HARD_CONSTRAINT)?;
+        for &i in force_new.iter().filter(|&&i| node_of(i) != u32::MAX) {
+            graph.add_terminal(node_of(i) as usize, 0.0, HARD_CONSTRAINT)?;
         }
         for (n, &s) in footprint.iter().enumerate() {
             for (t, horizontal) in [(canvas.right(s), true), (canvas.down(s), false)] {
-                let Some(t) = t.filter(|&t| node_of[t] != u32::MAX) else {
+                let Some(t) = t.filter(|&t| node_of(t) != u32::MAX) else {
                     continue;
                 };
-                let m = node_of[t] as usize;
+                let m = node_of(t) as usize;
                 match (self.patch_of(s), self.patch_of(t)) {
                     (None, None) => {}
                     (Some(a_s), Some(a_t)) if a_s != a_t => {
@@ -153,11 +170,7 @@ impl Synthesis {
                     (Some(a), Some(b)) => self.seam_cost(s, t, horizontal, a, b),
                     _ => 0.0,
                 };
-                if horizontal {
-                    self.canvas.h_seam[s] = cost;
-                } else {
-                    self.canvas.v_seam[s] = cost;
-                }
+                self.canvas.set_seam(s, horizontal, cost);
             }
         }
     }
