@@ -56,47 +56,47 @@ impl Synthesis {
             ((0..pw as i64).contains(&u) && (0..ph as i64).contains(&v))
                 .then(|| v as usize * pw + u as usize)
         };
-        let mut nodes = vec![u32::MAX; pw * ph];
-        for (n, &i) in footprint.iter().enumerate() {
-            nodes[local(i).expect("footprint pixels lie under the patch")] = n as u32;
-        }
-        let node_of = |j: usize| local(j).map_or(u32::MAX, |k| nodes[k]);
-        let mut graph = Graph::with_capacity(footprint.len(), 2 * footprint.len())?;
         let canvas = &self.canvas;
         let covered = |i: usize| canvas.label[i] != UNCOVERED;
-        for (n, &i) in footprint.iter().enumerate() {
-            if !covered(i) {
-                graph.add_terminal(n, 0.0, HARD_CONSTRAINT)?;
-                continue;
-            }
+        // Only covered pixels get a node. An uncovered pixel must take B, so it would sit on the
+        // sink's side with an infinite arc: its arc to a covered neighbour is the same as an arc
+        // from that neighbour to the sink, and the graph shrinks to the overlap (about half the
+        // patch while the output is being covered).
+        let mut nodes = vec![u32::MAX; pw * ph];
+        let mut node_count = 0usize;
+        for &i in footprint.iter().filter(|&&i| covered(i)) {
+            nodes[local(i).expect("footprint pixels lie under the patch")] = node_count as u32;
+            node_count += 1;
+        }
+        let node_of = |j: usize| local(j).map(|k| nodes[k]).filter(|&n| n != u32::MAX);
+        let mut graph = Graph::with_capacity(node_count, 2 * node_count)?;
+        for &i in &footprint {
+            let Some(n) = node_of(i) else { continue };
             let neighbours = [canvas.right(i), canvas.down(i), self.left(i), self.up(i)];
             if neighbours
                 .into_iter()
                 .flatten()
-                .any(|j| node_of(j) == u32::MAX && covered(j))
+                .any(|j| local(j).is_none() && covered(j))
             {
-                graph.add_terminal(n, HARD_CONSTRAINT, 0.0)?;
+                graph.add_terminal(n as usize, HARD_CONSTRAINT, 0.0)?;
             }
         }
-        for &i in keep_old
-            .iter()
-            .filter(|&&i| node_of(i) != u32::MAX && covered(i))
-        {
-            graph.add_terminal(node_of(i) as usize, HARD_CONSTRAINT, 0.0)?;
+        for n in keep_old.iter().filter_map(|&i| node_of(i)) {
+            graph.add_terminal(n as usize, HARD_CONSTRAINT, 0.0)?;
         }
-        for &i in force_new.iter().filter(|&&i| node_of(i) != u32::MAX) {
-            graph.add_terminal(node_of(i) as usize, 0.0, HARD_CONSTRAINT)?;
+        for n in force_new.iter().filter_map(|&i| node_of(i)) {
+            graph.add_terminal(n as usize, 0.0, HARD_CONSTRAINT)?;
         }
-        for (n, &s) in footprint.iter().enumerate() {
+        for &s in &footprint {
             for (t, horizontal) in [(canvas.right(s), true), (canvas.down(s), false)] {
-                let Some(t) = t.filter(|&t| node_of(t) != u32::MAX) else {
+                let Some(t) = t.filter(|&t| local(t).is_some()) else {
                     continue;
                 };
-                let m = node_of(t) as usize;
                 match (self.patch_of(s), self.patch_of(t)) {
                     (None, None) => {}
                     (Some(a_s), Some(a_t)) if a_s != a_t => {
                         // An old seam: its node, its cost to B, and the two new-seam arcs.
+                        let (n, m) = (node_of(s).expect("covered"), node_of(t).expect("covered"));
                         let old = if horizontal {
                             canvas.h_seam[s]
                         } else {
@@ -105,31 +105,41 @@ impl Synthesis {
                         let seam = graph.add_node();
                         let to_s = self.seam_cost(s, t, horizontal, a_s, patch);
                         let to_t = self.seam_cost(s, t, horizontal, patch, a_t);
-                        graph.add_edge(n, seam, to_s, to_s)?;
-                        graph.add_edge(seam, m, to_t, to_t)?;
+                        graph.add_edge(n as usize, seam, to_s, to_s)?;
+                        graph.add_edge(seam, m as usize, to_t, to_t)?;
                         graph.add_terminal(seam, 0.0, old)?;
                     }
                     (a_s, a_t) => {
-                        // One pixel is uncovered and must take B. The seam left if the other
-                        // keeps its patch A costs only that pixel's ||A - B||: A does not reach
-                        // the uncovered one (match_cost), whatever the empty canvas shows there.
+                        // The same old patch A on both sides, or one pixel uncovered (it takes
+                        // B): the seam left if a covered pixel keeps A costs M(A, B). With one
+                        // uncovered, only that pixel's ||A - B|| counts: A does not reach the
+                        // uncovered one (match_cost), whatever the empty canvas shows there.
                         let a = a_s.or(a_t).expect("one of them is covered");
                         let cost = self.seam_cost(s, t, horizontal, a, patch);
-                        graph.add_edge(n, m, cost, cost)?;
+                        match (node_of(s), node_of(t)) {
+                            (Some(n), Some(m)) => {
+                                graph.add_edge(n as usize, m as usize, cost, cost)?
+                            }
+                            (Some(n), None) | (None, Some(n)) => {
+                                graph.add_terminal(n as usize, 0.0, cost)?;
+                            }
+                            (None, None) => unreachable!("one of them is covered"),
+                        }
                     }
                 }
             }
         }
         let cut_cost = graph.maxflow();
+        let taken: Vec<usize> = footprint
+            .iter()
+            .copied()
+            .filter(|&i| node_of(i).is_none_or(|n| !graph.is_source_side(n as usize)))
+            .collect();
         let index = self.canvas.patches.len();
         self.canvas.patches.push(patch);
         self.used.insert(patch);
         let source = &self.sources[patch.source as usize];
-        let mut taken = Vec::new();
-        for (n, &i) in footprint.iter().enumerate() {
-            if graph.is_source_side(n) {
-                continue;
-            }
+        for &i in &taken {
             let (x, y) = (i % w, i / w);
             let (sx, sy) = self
                 .canvas
@@ -143,7 +153,6 @@ impl Synthesis {
                 self.canvas.covered += 1;
             }
             self.canvas.label[i] = index as u32;
-            taken.push(i);
         }
         // Only edges touching a pixel that changed can have a different seam now.
         self.update_seams(&taken);
