@@ -15,6 +15,7 @@ pub mod budget;
 pub mod canvas;
 pub mod options;
 pub mod placement;
+pub mod procedural;
 pub mod seam;
 pub mod session;
 pub mod source;
