@@ -89,14 +89,16 @@ fn main() {
 fn fft_versus_direct() {
     let region = waves(12, 12, 6, 2).unwrap();
     let input = waves(32, 32, 16, 3).unwrap();
-    let view = |v: &texsynth::methods::video::Volume| VolumeView {
-        data: v.data(),
-        width: v.width(),
-        height: v.height(),
-        depth: v.frames(),
-        channels: 3,
-        weights: None,
-    };
+    fn view(v: &texsynth::methods::video::Volume) -> VolumeView<'_> {
+        VolumeView {
+            data: v.data(),
+            width: v.width(),
+            height: v.height(),
+            depth: v.frames(),
+            channels: 3,
+            weights: None,
+        }
+    }
     let start = Instant::now();
     let map = volume_ssd_map(view(&region), view(&input)).unwrap();
     let fft = start.elapsed().as_secs_f64();

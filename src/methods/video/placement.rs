@@ -172,6 +172,38 @@ impl Synthesis {
         (!all.is_empty()).then(|| all[rng.index(all.len())])
     }
 
+    /// While covering: of `draws` random unused offsets, the one whose patch brings the most
+    /// uncovered voxels. Deviation from a uniform draw, measured: extending 96x96x30 to
+    /// 192x192x60 took 91 patches and 42 s uniformly, 63 patches and 16 s with 8 draws (native,
+    /// seed 1); with the region centred on the first
+    /// uncovered voxel, half of every uniform patch lands on covered video.
+    pub fn covering_offset(
+        &self,
+        region: Region,
+        allowed: Allowed,
+        used: &HashSet<Patch>,
+        rng: &mut Rng,
+        draws: usize,
+    ) -> Option<Patch> {
+        let mut best: Option<(usize, Patch)> = None;
+        let mut seen = used.clone();
+        for _ in 0..draws {
+            let Some(p) = self.random_offset(region, allowed, &seen, rng) else {
+                break;
+            };
+            seen.insert(p);
+            let new = self
+                .footprint(p)
+                .iter()
+                .filter(|&&i| self.canvas.label[i] == UNCOVERED)
+                .count();
+            if best.is_none_or(|(n, _)| new > n) {
+                best = Some((new, p));
+            }
+        }
+        best.map(|(_, p)| p)
+    }
+
     /// Every unused offset covering `region`.
     #[must_use]
     pub fn candidates(

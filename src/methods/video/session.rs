@@ -396,6 +396,9 @@ impl Session {
             tt: None,
         };
         let chosen = match self.options.placement {
+            Placement::Random if force.is_empty() && !s.canvas.is_covered() => {
+                s.covering_offset(region, allowed, &self.used, &mut self.rng, COVERING_DRAWS)
+            }
             Placement::Random => s.random_offset(region, allowed, &self.used, &mut self.rng),
             Placement::Matching => s.matching_offset(
                 region,
@@ -450,6 +453,10 @@ impl Session {
         }
     }
 }
+
+/// Random offsets drawn per covering step, of which the one bringing the most new voxels is
+/// placed (see `Synthesis::covering_offset`).
+const COVERING_DRAWS: usize = 8;
 
 /// Where an output frame's colours live.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
