@@ -12,6 +12,7 @@ mod optimization;
 mod options;
 mod pixels;
 mod quality;
+mod video;
 
 pub use design::{
     LayerDesign, TextureBrush, TileableSession, deform_texture, deformation_set, make_tileable,
@@ -23,6 +24,7 @@ pub use graphcut::GraphcutTextures;
 pub use merge::GraphcutMerge;
 pub use optimization::TextureOptimization;
 pub use quality::measure_quality;
+pub use video::{VideoClip, VideoTextures};
 
 use wasm_bindgen::prelude::*;
 

@@ -6,3 +6,4 @@ pub mod flow;
 pub mod graphcut;
 pub mod optimization;
 pub mod quality;
+pub mod video;

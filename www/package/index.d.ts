@@ -607,6 +607,84 @@ export class FeatureSynthesis implements Steppable<FeatureSynthesisEvent> {
   readonly width: number;
   readonly height: number;
 }
+/** A video clip held in wasm memory (RGB frames; alpha is ignored). */
+export class VideoClip {
+  private constructor();
+  /** `frames` RGBA8 frames of `width` x `height`, one after another (`width * height * 4 * frames` bytes). */
+  static fromFrames(width: number, height: number, frames: number, rgba: Uint8Array): VideoClip;
+  free(): void;
+  [Symbol.dispose](): void;
+  readonly width: number;
+  readonly height: number;
+  readonly frames: number;
+}
+
+/** Options of `VideoTextures` (graph-cut video textures, Kwatra et al. 2003, section 7). Input and
+ *  output together must fit the 256 MiB memory budget, or the constructor throws naming the sizes. */
+export interface VideoTexturesOptions {
+  /** 'loop' (7.A: best transition by frame-pair SSD, optimal seam surface around it; the output is
+   *  the loop), 'offsets' (7.B: the whole clip at random temporal offsets), 'extend' (7.C/7.E:
+   *  spatio-temporal patches; frames may be larger). Default: 'loop'. */
+  mode?: 'loop' | 'offsets' | 'extend';
+  /** Only 'extend' may differ from the clip. Default: the clip's width. */
+  outputWidth?: number;
+  /** Only 'extend' may differ from the clip. Default: the clip's height. */
+  outputHeight?: number;
+  /** Not for 'loop' (it chooses the loop length). Default: twice the clip's frames ('offsets'), the clip's ('extend'). */
+  outputFrames?: number;
+  /** k of 7.D for 'offsets' and 'extend': the first and last k frames fixed, then the first k removed, so the
+   *  output loops; 0 = no loop. At most the clip's frame count. Default: 10. */
+  fixedFrames?: number;
+  /** 'loop': the most frames of the seam window around the transition (shorter clips get at most a sixth of
+   *  their frames on either side). Default: 60. */
+  transitionWindow?: number;
+  /** 'random', or 'matching' (7.C: 3-D FFT SSD of the error region against every translation, eq. 3). Default: 'random'. */
+  placement?: 'random' | 'matching';
+  /** Default: 1. */
+  seed?: number;
+  /** k of eq. 3 for matching placement, > 0. Default: 0.01. */
+  k?: number;
+  /** Patches placed over the worst seams once covered. Default: 2. */
+  refinementPatches?: number;
+  /** Seam cost M' (eq. 5, divided by the gradients) instead of M. Default: false. */
+  gradientCost?: boolean;
+}
+export interface VideoTexturesEvent {
+  done: boolean;
+  /** Number of the patch placed by this step, -1 if none. */
+  patch: number;
+  patches: number;
+  /** The patch's offset in output voxels (frames counted after the removal of 7.D's first k). */
+  tx: number; ty: number; tt: number;
+  voxelsTaken: number;
+  cutCost: number;
+  covered: boolean;
+  /** Fraction of the output covered, 0..1. */
+  coverage: number;
+  /** The output frame around which the loop closes (centre of 7.A's seam window; the last frame for a 7.D
+   *  loop once done), or -1. */
+  loopFrame: number;
+}
+export class VideoTextures implements Steppable<VideoTexturesEvent> {
+  constructor(clip: VideoClip, options?: VideoTexturesOptions);
+  free(): void;
+  [Symbol.dispose](): void;
+  [Symbol.iterator](): Iterator<VideoTexturesEvent>;
+  run(options?: RunOptions<VideoTexturesEvent>): Promise<VideoTexturesEvent | null>;
+  step(): VideoTexturesEvent;
+  readonly done: boolean;
+  readonly width: number;
+  readonly height: number;
+  /** Output frames (the loop length for 'loop'). */
+  readonly frames: number;
+  /** Output frame t as opaque RGBA (`width * height * 4`). */
+  frameInto(t: number, rgba: Uint8Array): void;
+  /** Seam overlay of frame t: spatial seams opaque red, temporal seams translucent yellow, transparent elsewhere. */
+  seamsInto(t: number, rgba: Uint8Array): void;
+  /** The x-t slice at row y (`width` x `frames`, row t = frame t) with the seams in red (`width * frames * 4`). */
+  sliceXtInto(y: number, rgba: Uint8Array): void;
+}
+
 /** Curve ends per 1000 curve pixels in the output's feature map minus the exemplar's (lower is better). */
 export function measureBrokenFeatures(exemplar: Exemplar, rgba: Bytes, width: number, height: number, options?: DetectFeaturesOptions): number;
 

@@ -25,8 +25,13 @@
 #[cfg(test)]
 mod tests;
 mod transform;
+mod volume;
 
-use transform::Transform2d;
+use transform::Transform;
+pub use volume::{
+    MAX_VOLUME_TRANSFORM_VALUES, VolumeSsdMap, VolumeView, volume_search_bytes, volume_ssd_map,
+    volume_transform_size,
+};
 
 use crate::solvers::fft::{Complex, correlate_spectra, smooth_size};
 
@@ -119,7 +124,7 @@ impl SsdMap {
 /// A reusable FFT SSD search: it keeps the FFT plans and buffers between calls, since a synthesis
 /// searches once per patch placement with the same sizes every time.
 pub struct SsdSearch {
-    transform: Option<Transform2d>,
+    transform: Option<Transform>,
     /// Real-valued work image of the transform size.
     field: Vec<f64>,
     /// Spectra: output weights, accumulated cost, and a temporary.
@@ -317,7 +322,7 @@ impl SsdSearch {
             .as_ref()
             .is_none_or(|t| (t.nx, t.ny) != (nx, ny))
         {
-            self.transform = Some(Transform2d::new(nx, ny));
+            self.transform = Some(Transform::new(nx, ny));
         }
         self.field.resize(nx * ny, 0.0);
         for spectrum in &mut self.spectra {

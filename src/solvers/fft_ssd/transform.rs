@@ -1,4 +1,6 @@
-//! A 2-D real FFT: real transforms along the rows, then complex transforms along the columns.
+//! A 2-D or 3-D real FFT: real transforms along the rows, then complex transforms along the
+//! columns, then (for a volume, `nz > 1`) complex transforms along the third axis, the time of a
+//! video. An image is the depth-1 case: the third pass is skipped and nothing else changes.
 
 use crate::solvers::fft::{Complex, Direction, Fft, RealFft};
 
@@ -6,34 +8,57 @@ use crate::solvers::fft::{Complex, Direction, Fft, RealFft};
 /// loops in the passes, and a block that stays in cache (`n * 16 * 16` bytes).
 const BLOCK: usize = 8;
 
-/// The spectrum is row-major, `spectrum[y * (nx / 2 + 1) + kx]`; products of spectra do not care
-/// about the layout.
-pub(super) struct Transform2d {
+/// The spectrum is row-major, `spectrum[(z * ny + y) * (nx / 2 + 1) + kx]`; products of spectra
+/// do not care about the layout.
+pub(super) struct Transform {
     pub(super) nx: usize,
     pub(super) ny: usize,
+    /// Depth (frames); 1 for an image.
+    pub(super) nz: usize,
     rows: RealFft,
     columns_forward: Fft,
     columns_inverse: Fft,
+    /// Plans along the third axis (`None` for an image).
+    depth: Option<(Fft, Fft)>,
     block: Vec<Complex<f64>>,
     scratch: Vec<Complex<f64>>,
 }
 
-impl Transform2d {
+impl Transform {
+    /// A transform of an `nx` x `ny` image.
     pub(super) fn new(nx: usize, ny: usize) -> Self {
+        Self::new_volume(nx, ny, 1)
+    }
+
+    /// A transform of an `nx` x `ny` x `nz` volume (`nz` frames of `nx` x `ny`).
+    pub(super) fn new_volume(nx: usize, ny: usize, nz: usize) -> Self {
         let rows = RealFft::new(nx);
         let columns_forward = Fft::new(ny, Direction::Forward);
         let columns_inverse = Fft::new(ny, Direction::Inverse);
-        let scratch_len = rows
+        let depth = (nz > 1).then(|| {
+            (
+                Fft::new(nz, Direction::Forward),
+                Fft::new(nz, Direction::Inverse),
+            )
+        });
+        let mut scratch_len = rows
             .batch_scratch_len(BLOCK)
             .max(columns_forward.batch_scratch_len(BLOCK))
             .max(columns_inverse.batch_scratch_len(BLOCK));
-        Transform2d {
+        if let Some((f, i)) = &depth {
+            scratch_len = scratch_len
+                .max(f.batch_scratch_len(BLOCK))
+                .max(i.batch_scratch_len(BLOCK));
+        }
+        Transform {
             nx,
             ny,
+            nz,
             rows,
             columns_forward,
             columns_inverse,
-            block: vec![Complex::default(); ny * BLOCK],
+            depth,
+            block: vec![Complex::default(); ny.max(nz) * BLOCK],
             scratch: vec![Complex::default(); scratch_len],
         }
     }
@@ -47,13 +72,20 @@ impl Transform2d {
         {
             self.rows.forward_batch(rows, out, &mut self.scratch);
         }
-        self.columns(spectrum, Direction::Forward);
+        let slice = width * self.ny;
+        for frame in spectrum.chunks_exact_mut(slice) {
+            self.columns(frame, Direction::Forward);
+        }
+        self.depth(spectrum, Direction::Forward);
     }
 
     /// The spectrum (overwritten) back to `field`, scaled by `nx * ny`.
     pub(super) fn inverse(&mut self, spectrum: &mut [Complex<f64>], field: &mut [f64]) {
-        self.columns(spectrum, Direction::Inverse);
+        self.depth(spectrum, Direction::Inverse);
         let width = self.rows.spectrum_len();
+        for frame in spectrum.chunks_exact_mut(width * self.ny) {
+            self.columns(frame, Direction::Inverse);
+        }
         for (rows, out) in spectrum
             .chunks(width * BLOCK)
             .zip(field.chunks_mut(self.nx * BLOCK))
@@ -62,7 +94,39 @@ impl Transform2d {
         }
     }
 
-    /// Transforms every column of the row-major spectrum, a block of columns at a time.
+    /// Transforms along the third axis: the same (y, kx) of every frame is one sequence. Frames are
+    /// `slice` values apart, so a block of neighbouring sequences is gathered, transformed as one
+    /// batch, and scattered back, as for the columns.
+    fn depth(&mut self, spectrum: &mut [Complex<f64>], direction: Direction) {
+        let Some((forward, inverse)) = &self.depth else {
+            return;
+        };
+        let plan = match direction {
+            Direction::Forward => forward,
+            Direction::Inverse => inverse,
+        };
+        let slice = self.rows.spectrum_len() * self.ny;
+        for first in (0..slice).step_by(BLOCK) {
+            let count = BLOCK.min(slice - first);
+            let block = &mut self.block[..self.nz * count];
+            for (to, frame) in block
+                .chunks_exact_mut(count)
+                .zip(spectrum.chunks_exact(slice))
+            {
+                to.copy_from_slice(&frame[first..first + count]);
+            }
+            plan.process_batch(block, &mut self.scratch, count);
+            for (from, frame) in block
+                .chunks_exact(count)
+                .zip(spectrum.chunks_exact_mut(slice))
+            {
+                frame[first..first + count].copy_from_slice(from);
+            }
+        }
+    }
+
+    /// Transforms every column of one row-major frame of the spectrum, a block of columns at a
+    /// time.
     fn columns(&mut self, spectrum: &mut [Complex<f64>], direction: Direction) {
         let width = self.rows.spectrum_len();
         let plan = match direction {

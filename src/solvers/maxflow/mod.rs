@@ -43,7 +43,7 @@ mod graph;
 mod residual;
 
 #[cfg(test)]
-mod oracle;
+pub(crate) mod oracle;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]

@@ -9,7 +9,7 @@ use crate::core::Rng;
 
 /// A graph description the oracles and the solver can both be built from.
 #[derive(Debug, Clone, Default)]
-pub(super) struct Spec {
+pub(crate) struct Spec {
     pub nodes: usize,
     pub edges: Vec<(usize, usize, f32, f32)>,
     /// `(node, source capacity, sink capacity)`, added in order (a node may appear twice).

@@ -2,7 +2,7 @@
 // Lines marked @ts-expect-error must fail to type-check: they prove the types are not `any`.
 import init, {
   Exemplar, FlowAnimation, GraphcutMerge, GraphcutTextures, LayerDesign, TextureBrush, TextureOptimization,
-  FeatureMap, FeatureSynthesis, detectFeatures, measureBrokenFeatures,
+  FeatureMap, FeatureSynthesis, detectFeatures, measureBrokenFeatures, VideoClip, VideoTextures,
   TileableSession, deformTexture, deformationSet, flowField, initSync, makeTileable, measureQuality, start, version,
   yieldToEventLoop,
   type FlowAnimationEvent, type GraphcutTexturesEvent, type Quality, type TextureOptimizationEvent, type TexsynthError,
@@ -52,6 +52,15 @@ async function everything(): Promise<void> {
   const broken: number = measureBrokenFeatures(ex, rgba, 256, 256, { features: 'edges' });
   // @ts-expect-error: not a feature kind
   detectFeatures(ex, { features: 'corners' });
+  const clip = VideoClip.fromFrames(8, 8, 12, new Uint8Array(8 * 8 * 4 * 12));
+  const video = new VideoTextures(clip, { mode: 'extend', outputWidth: 16, fixedFrames: 2, placement: 'matching' });
+  for (const event of video) {
+    const loopFrame: number = event.loopFrame;
+  }
+  video.frameInto(0, new Uint8Array(video.width * video.height * 4));
+  video.sliceXtInto(0, new Uint8Array(video.width * video.frames * 4));
+  // @ts-expect-error: not a video mode
+  new VideoTextures(clip, { mode: 'bounce' });
   const history: Float64Array = to.energyHistory();
   const levels: Uint32Array = to.historyLevels();
   const plan = to.schedule().map((l) => l.neighbourhoodSize * l.scale);
@@ -150,6 +159,7 @@ type _Coverage = [
   Covers<Generated.FlowAnimation, FlowAnimation>, Covers<Generated.TileableSession, TileableSession>,
   Covers<Generated.TextureBrush, TextureBrush>, Covers<Generated.LayerDesign, LayerDesign>,
   Covers<Generated.FeatureSynthesis, FeatureSynthesis>, Covers<Generated.FeatureMap, FeatureMap>,
+  Covers<Generated.VideoClip, VideoClip>, Covers<Generated.VideoTextures, VideoTextures>,
 ];
 // Every export of the generated module is declared (generated names are a subset of the typed).
 type _Functions = Covers<keyof typeof import('texsynth-wasm'), keyof typeof import('texsynth-wasm/texsynth.js')>;

@@ -1,0 +1,172 @@
+//! Options of a video synthesis, with the paper's values as defaults.
+
+use crate::core::{Error, Result};
+
+/// Which of the paper's video syntheses to run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Mode {
+    /// 7.A: the best transition (i -> j) by frame-pair SSD, then the optimal seam surface in a
+    /// window around it; the output is a loop of i - j frames.
+    #[default]
+    Loop,
+    /// 7.B: copies of the whole input at random (or matching) temporal offsets; frame size of the
+    /// input; looped by the temporal constraints of 7.D when `fixed_frames > 0`.
+    Offsets,
+    /// 7.C / 7.E: spatio-temporal patches placed in x, y and t; frames may be larger than the
+    /// input's; looped by 7.D when `fixed_frames > 0`.
+    Extend,
+}
+
+impl Mode {
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Mode> {
+        match name {
+            "loop" => Some(Mode::Loop),
+            "offsets" => Some(Mode::Offsets),
+            "extend" => Some(Mode::Extend),
+            _ => None,
+        }
+    }
+}
+
+/// How offsets are chosen (section 4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Placement {
+    /// Any unused offset that covers the error region, uniformly (7.B's random offsets).
+    #[default]
+    Random,
+    /// Sub-patch matching in 3-D (7.C): the SSD of the error region against every translation of
+    /// the input by 3-D FFT, drawn by eq. 3.
+    Matching,
+}
+
+impl Placement {
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Placement> {
+        match name {
+            "random" => Some(Placement::Random),
+            "matching" => Some(Placement::Matching),
+            _ => None,
+        }
+    }
+}
+
+/// Every option; `None` sizes mean "the input's" (frames: twice the input's for `Offsets`,
+/// the input's for `Extend`; `Loop` chooses its own length).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Options {
+    pub mode: Mode,
+    pub output_width: Option<usize>,
+    pub output_height: Option<usize>,
+    pub output_frames: Option<usize>,
+    /// k of 7.D: the first and last k frames fixed while synthesising, then the first k removed.
+    /// Default: 10 ("k = 10 in our implementation"). 0 turns the constraint off (no loop).
+    pub fixed_frames: usize,
+    /// The most frames of the seam window around the transition of 7.A. Default: 60 (the
+    /// paper's "60-frame spatio-temporal window"); shorter clips get a shorter window.
+    pub transition_window: usize,
+    pub placement: Placement,
+    pub seed: u64,
+    /// k of eq. 3 for matching placement. Default: 0.01, as in the image version.
+    pub k: f32,
+    /// Patches placed over the worst seams once the output is covered (section 3.2). Default: 2;
+    /// every one is a graph the size of a whole input clip.
+    pub refinement_patches: usize,
+    /// M' (eq. 5) instead of M. Default: false.
+    pub gradient_cost: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            mode: Mode::Loop,
+            output_width: None,
+            output_height: None,
+            output_frames: None,
+            fixed_frames: 10,
+            transition_window: 60,
+            placement: Placement::Random,
+            seed: 1,
+            k: 0.01,
+            refinement_patches: 2,
+            gradient_cost: false,
+        }
+    }
+}
+
+fn invalid(name: &'static str, reason: String) -> Error {
+    Error::InvalidParameter { name, reason }
+}
+
+impl Options {
+    /// The output size (width, height, frames as the user sees them) for an input of this size,
+    /// or an error naming the option that does not fit the mode.
+    pub fn output_size(&self, input: (usize, usize, usize)) -> Result<(usize, usize, usize)> {
+        let width = self.output_width.unwrap_or(input.0);
+        let height = self.output_height.unwrap_or(input.1);
+        if self.mode != Mode::Extend && (width, height) != (input.0, input.1) {
+            return Err(invalid(
+                "outputWidth/outputHeight",
+                format!(
+                    "only mode 'extend' changes the frame size; the clip is {}x{}, asked for {width}x{height}",
+                    input.0, input.1
+                ),
+            ));
+        }
+        if !(self.k.is_finite() && self.k > 0.0) {
+            return Err(invalid(
+                "k",
+                format!("must be a positive number, got {}", self.k),
+            ));
+        }
+        match self.mode {
+            Mode::Loop => {
+                if self.output_frames.is_some() {
+                    return Err(invalid(
+                        "outputFrames",
+                        "mode 'loop' chooses the loop length from the best transition; leave it out".into(),
+                    ));
+                }
+                if self.transition_window < 3 {
+                    return Err(invalid(
+                        "transitionWindow",
+                        format!("must be at least 3 frames, got {}", self.transition_window),
+                    ));
+                }
+                Ok((width, height, input.2))
+            }
+            Mode::Offsets | Mode::Extend => {
+                let frames = self.output_frames.unwrap_or(if self.mode == Mode::Offsets {
+                    2 * input.2
+                } else {
+                    input.2
+                });
+                if frames == 0 || width == 0 || height == 0 {
+                    return Err(invalid(
+                        "output size",
+                        format!("{width}x{height}x{frames} is empty"),
+                    ));
+                }
+                let k = self.fixed_frames;
+                if k > 0 && k > input.2 {
+                    return Err(invalid(
+                        "fixedFrames",
+                        format!(
+                            "{k} fixed frames need a clip of at least {k} frames; it has {} (use a smaller fixedFrames, or 0)",
+                            input.2
+                        ),
+                    ));
+                }
+                if k > 0 && frames < k + 1 {
+                    return Err(invalid(
+                        "fixedFrames",
+                        format!(
+                            "{k} fixed frames need more than {k} output frames, got outputFrames {frames}"
+                        ),
+                    ));
+                }
+                Ok((width, height, frames))
+            }
+        }
+    }
+}
