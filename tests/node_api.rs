@@ -21,3 +21,6 @@ mod design_cases;
 
 #[path = "common/features_cases.rs"]
 mod features_cases;
+
+#[path = "common/video_cases.rs"]
+mod video_cases;

@@ -11,8 +11,9 @@ import * as flow from './panels/flow.js';
 import * as graphcut from './panels/graphcut.js';
 import * as merge from './panels/merge.js';
 import * as optimization from './panels/optimization.js';
+import * as video from './panels/video.js';
 
-const PANELS = [optimization, graphcut, merge, flow, design, features];
+const PANELS = [optimization, graphcut, merge, flow, design, features, video];
 const $ = (id) => document.getElementById(id);
 
 function showError(message) {

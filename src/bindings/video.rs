@@ -136,6 +136,8 @@ pub struct VideoTextures {
     session: Session,
     /// A reusable RGBA buffer for the renderers.
     buffer: Vec<u8>,
+    /// The first frame the last placed patch reached into.
+    last_frame: usize,
 }
 
 #[wasm_bindgen]
@@ -152,13 +154,19 @@ impl VideoTextures {
         Ok(VideoTextures {
             session: Session::new(clip.volume.clone(), options)?,
             buffer: Vec::new(),
+            last_frame: 0,
         })
     }
 
     /// Places one patch. Returns `{ done, patch, patches, tx, ty, tt, voxelsTaken, cutCost,
     /// covered, coverage, loopFrame }` (`patch` and `loopFrame` are -1 when none).
     pub fn step(&mut self) -> JsResult<JsValue> {
-        Ok(event_object(&self.session.step()?))
+        let event = self.session.step()?;
+        if event.patch.is_some() {
+            let d = self.session.size().2 as i64;
+            self.last_frame = i64::from(event.offset.2).clamp(0, (d - 1).max(0)) as usize;
+        }
+        Ok(event_object(&event))
     }
 
     #[wasm_bindgen(getter)]
@@ -200,9 +208,55 @@ impl VideoTextures {
     pub fn slice_xt_into(&mut self, y: u32, rgba: &Uint8Array) -> JsResult<()> {
         self.render(rgba, |s, out| slice_xt_rgba(s, y as usize, out))
     }
+
+    /// Output frame `t` as a new RGBA `Uint8Array` (for workers, where a buffer cannot be
+    /// filled across the boundary).
+    pub fn frame(&self, t: u32) -> JsResult<Vec<u8>> {
+        self.rendered(self.pixels(), |s, out| frame_rgba(s, t as usize, out))
+    }
+
+    /// The seam overlay of frame `t` as a new RGBA `Uint8Array` (see `seamsInto`).
+    pub fn seams(&self, t: u32) -> JsResult<Vec<u8>> {
+        self.rendered(self.pixels(), |s, out| seams_rgba(s, t as usize, out))
+    }
+
+    /// The x-t slice at row `y` as a new RGBA `Uint8Array`, `width` x `frames` (see `sliceXtInto`).
+    #[wasm_bindgen(js_name = sliceXt)]
+    pub fn slice_xt(&self, y: u32) -> JsResult<Vec<u8>> {
+        let (w, _, d) = self.session.size();
+        self.rendered(w * d, |s, out| slice_xt_rgba(s, y as usize, out))
+    }
+
+    /// The frame the last patch reached into (frame 0 before the first step), as RGBA: what a
+    /// generic progress view (a worker's step image, the CLI) shows.
+    #[wasm_bindgen(js_name = renderInto)]
+    pub fn render_into(&mut self, rgba: &Uint8Array) -> JsResult<()> {
+        let t = self.current_frame();
+        self.render(rgba, |s, out| frame_rgba(s, t, out))
+    }
 }
 
 impl VideoTextures {
+    fn pixels(&self) -> usize {
+        let (w, h, _) = self.session.size();
+        w * h
+    }
+
+    fn current_frame(&self) -> usize {
+        let (_, _, d) = self.session.size();
+        self.last_frame.min(d.saturating_sub(1))
+    }
+
+    fn rendered(
+        &self,
+        pixels: usize,
+        draw: impl FnOnce(&Session, &mut [u8]) -> crate::core::Result<()>,
+    ) -> JsResult<Vec<u8>> {
+        let mut out = vec![0u8; pixels * 4];
+        draw(&self.session, &mut out)?;
+        Ok(out)
+    }
+
     fn render(
         &mut self,
         rgba: &Uint8Array,

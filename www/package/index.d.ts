@@ -683,6 +683,14 @@ export class VideoTextures implements Steppable<VideoTexturesEvent> {
   seamsInto(t: number, rgba: Uint8Array): void;
   /** The x-t slice at row y (`width` x `frames`, row t = frame t) with the seams in red (`width * frames * 4`). */
   sliceXtInto(y: number, rgba: Uint8Array): void;
+  /** Output frame t as a new RGBA array (for workers: `remote.call('frame', t)`). */
+  frame(t: number): Uint8Array;
+  /** The seam overlay of frame t as a new RGBA array. */
+  seams(t: number): Uint8Array;
+  /** The x-t slice at row y as a new RGBA array (`width` x `frames`). */
+  sliceXt(y: number): Uint8Array;
+  /** The frame the last patch reached into (frame 0 before the first step), as RGBA. */
+  renderInto(rgba: Bytes): void;
 }
 
 /** Curve ends per 1000 curve pixels in the output's feature map minus the exemplar's (lower is better). */

@@ -3,8 +3,11 @@ import type {
   Exemplar, FlowAnimationEvent, FlowAnimationOptions, GraphcutMergeEvent, GraphcutTexturesEvent,
   GraphcutTexturesOptions, LayerDesignEvent, LayerDesignOptions, TextureBrushOptions,
   TextureOptimizationEvent, TextureOptimizationOptions, TileableEvent, TileableOptions,
-  FeatureSynthesisEvent, FeatureSynthesisOptions,
+  FeatureSynthesisEvent, FeatureSynthesisOptions, VideoTexturesEvent, VideoTexturesOptions,
 } from './index.js';
+
+/** A video clip to send to a worker: the frames' RGBA one after the other; it becomes a VideoClip. */
+export interface ClipInput { clip: { width: number; height: number; frames: number; rgba: Uint8Array | Uint8ClampedArray } }
 
 /** An exemplar to send to a worker: an Exemplar (copied), PNG/JPEG bytes, or raw RGBA. */
 export type ExemplarInput = Exemplar | { bytes: ArrayBuffer | Uint8Array } | { rgba: Uint8Array | Uint8ClampedArray; width: number; height: number };
@@ -19,6 +22,7 @@ export interface SessionKinds {
   LayerDesign: { args: [LayerDesignOptions?]; event: LayerDesignEvent };
   TextureBrush: { args: [ExemplarInput, TextureBrushOptions?]; event: never };
   FeatureSynthesis: { args: [ExemplarInput, FeatureSynthesisOptions?]; event: FeatureSynthesisEvent };
+  VideoTextures: { args: [ClipInput, VideoTexturesOptions?]; event: VideoTexturesEvent };
 }
 export type SessionKind = keyof SessionKinds;
 

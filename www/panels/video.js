@@ -32,8 +32,8 @@ const OPTIONS_HTML = `
     <option value="random">random</option>
     <option value="matching">spatio-temporal matching (7.C)</option>
   </select></label>
-  <label title="output frames; 0: as many as the clip">out frames <input id="vt-out-frames" type="number" value="0" min="0" max="480" step="1"></label>
-  <label title="frames held fixed at both ends while a loop is made (7.D)">k <input id="vt-fixed" type="number" value="10" min="0" max="60" step="1"></label>
+  <label title="output frames (offsets and extension; a loop is as long as its transition); 0: the default">out frames <input id="vt-out-frames" type="number" value="0" min="0" max="480" step="1"></label>
+  <label title="frames held fixed at both ends of a spatial extension so that it loops (7.D); 0: no loop">k <input id="vt-fixed" type="number" value="10" min="0" max="60" step="1"></label>
   <label class="views" title="the row the x-t slice is taken at">slice row <input id="vt-row" class="view" type="range" min="0" max="63" value="32"></label>
   <button id="vt-record" type="button" class="view">Record WebM</button>
   <a id="vt-download" hidden download="texsynth-video.webm">download video</a>`;
@@ -41,20 +41,20 @@ const OPTIONS_HTML = `
 const SIDE_HTML = `
   <div class="readout" id="vt-readout">press Run or Step</div>
   <div class="side-row">
-    <figure><canvas id="vt-playback" width="128" height="128" aria-label="Output, playing"></canvas>
+    <figure><canvas id="vt-playback" width="128" height="128" style="width: 128px; image-rendering: pixelated" aria-label="Output, playing"></canvas>
       <figcaption id="vt-playback-caption">output, looping</figcaption></figure>
-    <figure><canvas id="vt-input" width="128" height="128" aria-label="Input clip, playing"></canvas>
+    <figure><canvas id="vt-input" width="128" height="128" style="width: 128px; image-rendering: pixelated" aria-label="Input clip, playing"></canvas>
       <figcaption id="vt-input-caption">input clip</figcaption></figure>
   </div>
-  <figure><canvas id="vt-slice" class="slice" width="128" height="60" aria-label="x-t slice with seams"></canvas>
-    <figcaption id="vt-slice-caption">x-t slice (x across, time down), seams in orange</figcaption></figure>
+  <figure><canvas id="vt-slice" class="slice" width="128" height="60" style="width: 100%; image-rendering: pixelated" aria-label="x-t slice with seams"></canvas>
+    <figcaption id="vt-slice-caption">x-t slice (x across, time down), seams in red</figcaption></figure>
   <div class="side-row">
-    <figure><canvas id="vt-loop-last" width="64" height="64" aria-label="Last frame"></canvas>
-      <figcaption>last frame</figcaption></figure>
-    <figure><canvas id="vt-loop-first" width="64" height="64" aria-label="First frame"></canvas>
-      <figcaption>first frame</figcaption></figure>
+    <figure><canvas id="vt-loop-last" width="64" height="64" style="width: 128px; image-rendering: pixelated" aria-label="Frame before the loop point"></canvas>
+      <figcaption>before the loop point</figcaption></figure>
+    <figure><canvas id="vt-loop-first" width="64" height="64" style="width: 128px; image-rendering: pixelated" aria-label="Frame after the loop point"></canvas>
+      <figcaption>after it</figcaption></figure>
   </div>
-  <p class="legend" id="vt-loop-caption">The loop point: the last frame is followed by the first.</p>`;
+  <p class="legend" id="vt-loop-caption">The loop point and the frames on either side of it.</p>`;
 
 export function createPanel(ui) {
   let clip = null;
@@ -109,7 +109,8 @@ export function createPanel(ui) {
       fixedFrames: Math.round(Number(ui.$('vt-fixed').value) || 0),
       seed: ui.seed(),
     };
-    if (outFrames > 0) o.outputFrames = outFrames;
+    // A loop is as long as the transition it finds; the other modes take a length.
+    if (outFrames > 0 && mode !== 'loop') o.outputFrames = outFrames;
     if (mode === 'extend') {
       o.outputWidth = 2 * size();
       o.outputHeight = 2 * size();
@@ -167,7 +168,7 @@ export function createPanel(ui) {
     canvas.width = session.width;
     canvas.height = frames;
     canvas.getContext('2d').putImageData(frameImage(slice, session.width, frames), 0, 0);
-    ui.$('vt-slice-caption').textContent = `x-t slice at row ${row} (x across, frames 1-${frames} down), seams in orange`;
+    ui.$('vt-slice-caption').textContent = `x-t slice at row ${row} (x across, frames 1-${frames} down), seams in red`;
   }
 
   async function drawLoopPoint(loopFrame) {
@@ -177,7 +178,9 @@ export function createPanel(ui) {
     const [a, b] = await Promise.all([session.send('frame', last), session.send('frame', first)]);
     show(ui.$('vt-loop-last'), frameImage(a, session.width, session.height));
     show(ui.$('vt-loop-first'), frameImage(b, session.width, session.height));
-    ui.$('vt-loop-caption').textContent = `The loop point: frame ${last + 1} is followed by frame ${first + 1}.`;
+    ui.$('vt-loop-caption').textContent = loopFrame >= 0
+      ? `Where the loop closes (the centre of the seam window of 7.A, or the end of a 7.D loop): frame ${last + 1} is followed by frame ${first + 1}.`
+      : `Not a loop: frame ${last + 1} is followed by frame ${first + 1} only when played round.`;
   }
 
   async function collectOutput() {

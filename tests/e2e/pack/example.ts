@@ -59,6 +59,10 @@ async function everything(): Promise<void> {
   }
   video.frameInto(0, new Uint8Array(video.width * video.height * 4));
   video.sliceXtInto(0, new Uint8Array(video.width * video.frames * 4));
+  const frame: Uint8Array = video.frame(0);
+  const slice: Uint8Array = video.sliceXt(0);
+  video.seams(0);
+  video.renderInto(new Uint8ClampedArray(video.width * video.height * 4));
   // @ts-expect-error: not a video mode
   new VideoTextures(clip, { mode: 'bounce' });
   const history: Float64Array = to.energyHistory();

@@ -1,0 +1,53 @@
+// The "Video textures" panel in headless Chromium: the demo clip (a film strip PNG) is decoded in
+// the page, a loop is synthesised in the worker one patch at a time, the x-t slice and the loop
+// point are drawn, the loop plays, and "Record WebM" produces a video.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { canvasPixels, openDemo, RESULTS } from './harness.mjs';
+
+let demo;
+before(async () => {
+  demo = await openDemo();
+});
+after(async () => demo?.close());
+
+test('the demo clip loops, with its x-t slice, loop point, playback and WebM', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-panel="video"]');
+  await page.fill('#vt-size', '48');
+  await page.dispatchEvent('#vt-size', 'change');
+  await page.fill('#vt-frames', '36');
+  await page.dispatchEvent('#vt-frames', 'change');
+  await page.waitForFunction(() => /input clip: 48×48, 36 frames/.test(document.getElementById('vt-input-caption').textContent));
+
+  await page.click('#step');
+  await page.waitForSelector('body[data-video-patches="1"]', { timeout: 60_000 });
+  assert.match(await page.textContent('#vt-readout'), /patch 1 at \(x -?\d+, y -?\d+, t -?\d+\) .* voxels taken .* cut cost/);
+
+  await page.click('#run');
+  await page.waitForSelector('body[data-video-done="true"]', { timeout: 120_000 });
+  const frames = Number(await page.getAttribute('body', 'data-video-frames'));
+  assert.ok(frames >= 2, `${frames} output frames`);
+  const slice = await canvasPixels(page, 'vt-slice');
+  assert.equal(slice.length, 48 * frames * 4, 'the x-t slice is width x frames');
+  assert.ok(new Set(slice).size > 20, 'the x-t slice is drawn');
+  assert.ok(new Set(await canvasPixels(page, 'vt-loop-last')).size > 20, 'the loop point is drawn');
+  // 7.A: the loop closes at the centre of the seam window, where the cut joins the clip to its
+  // shifted copy; the caption names the frames on either side.
+  const [, before, after] = (await page.textContent('#vt-loop-caption')).match(/frame (\d+) is followed by frame (\d+)/);
+  assert.equal(Number(after), (Number(before) % frames) + 1);
+  await page.waitForFunction(() => Number(document.body.dataset.videoPlayed ?? 0) > 3);
+  assert.ok(new Set(await canvasPixels(page, 'vt-playback')).size > 20, 'the loop plays');
+
+  await page.click('#vt-record');
+  await page.waitForSelector('body[data-recorded-bytes]', { timeout: 60_000 });
+  const bytes = Number(await page.getAttribute('body', 'data-recorded-bytes'));
+  assert.ok(bytes > 1000, `the WebM has ${bytes} bytes`);
+  const header = await page.evaluate(async () => {
+    const blob = await (await fetch(document.getElementById('vt-download').href)).arrayBuffer();
+    return Array.from(new Uint8Array(blob, 0, 4));
+  });
+  assert.deepEqual(header, [0x1a, 0x45, 0xdf, 0xa3], 'the file starts with the EBML (WebM) signature');
+  await page.screenshot({ path: `${RESULTS}/video.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});
