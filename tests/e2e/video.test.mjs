@@ -49,5 +49,24 @@ test('the demo clip loops, with its x-t slice, loop point, playback and WebM', a
   });
   assert.deepEqual(header, [0x1a, 0x45, 0xdf, 0xa3], 'the file starts with the EBML (WebM) signature');
   await page.screenshot({ path: `${RESULTS}/video.png`, fullPage: true });
+
+  // The recorded WebM, dropped back in as a video file: decoded frame by frame through a <video>
+  // element, then looped in its turn.
+  const webm = await page.evaluate(async () => {
+    const blob = await (await fetch(document.getElementById('vt-download').href)).arrayBuffer();
+    return Array.from(new Uint8Array(blob));
+  });
+  await page.setInputFiles('#vt-file', { name: 'loop.webm', mimeType: 'video/webm', buffer: Buffer.from(webm) });
+  await page.fill('#vt-size', '32');
+  await page.dispatchEvent('#vt-size', 'change');
+  await page.fill('#vt-frames', '24');
+  await page.dispatchEvent('#vt-frames', 'change');
+  await page.waitForFunction(() => /input clip: 32×32, \d+ frames/.test(document.getElementById('vt-input-caption').textContent), null, { timeout: 60_000 });
+  const decoded = Number((await page.textContent('#vt-input-caption')).match(/(\d+) frames/)[1]);
+  assert.ok(decoded >= 8, `${decoded} frames decoded from the WebM`);
+  await page.click('#run');
+  await page.waitForSelector('body[data-video-done="true"]', { timeout: 120_000 });
+  assert.ok(Number(await page.getAttribute('body', 'data-video-frames')) >= 2);
+  await page.screenshot({ path: `${RESULTS}/video-file.png`, fullPage: true });
   assert.deepEqual(errors, []);
 });

@@ -83,15 +83,19 @@ export async function clipFromVideo(file, { width, height, frames, fps = 15, onP
       video.onloadeddata = resolve;
       video.onerror = () => reject(new Error(`this browser cannot decode ${file.name ?? 'the video'}`));
     });
+    const seek = (time) => new Promise((resolve, reject) => {
+      video.onseeked = resolve;
+      video.onerror = () => reject(new Error(`decoding failed at ${time.toFixed(2)} s`));
+      video.currentTime = time;
+    });
+    // A recorded WebM (MediaRecorder's, for one) may not state its duration: seeking far past
+    // the end makes the browser read to the end and learn it.
+    if (!Number.isFinite(video.duration)) await seek(1e6);
     const count = Math.min(frames, Math.max(2, Math.floor(video.duration * fps)));
     const ctx = scratchContext(width, height);
     const out = [];
     for (let t = 0; t < count; t++) {
-      await new Promise((resolve, reject) => {
-        video.onseeked = resolve;
-        video.onerror = () => reject(new Error(`decoding failed at frame ${t + 1}`));
-        video.currentTime = Math.min(video.duration, t / fps);
-      });
+      await seek(Math.min(video.duration, t / fps));
       out.push(grab(ctx, video, video.videoWidth, video.videoHeight, width, height));
       onProgress?.(t + 1, count);
     }

@@ -71,21 +71,39 @@ export function createPanel(ui) {
   const size = () => Math.min(256, Math.max(16, Math.round(Number(ui.$('vt-size').value) || 64)));
   const frameCount = () => Math.min(240, Math.max(4, Math.round(Number(ui.$('vt-frames').value) || 40)));
 
-  /** The clip at the chosen size, decoded once per source and size. */
+  /** The clip at the chosen size, decoded once per source and size. A decode that another
+   * request has superseded (the size changed while a video was decoding) is dropped. */
+  let loading = null;
   async function loadClip() {
     const files = ui.$('vt-file').files;
     const fromFile = ui.$('vt-source').value === 'file' && files.length > 0;
     const key = `${fromFile ? [...files].map((f) => f.name).join('|') : 'demo'}:${size()}:${frameCount()}`;
     if (clip && clipKey === key) return clip;
+    if (loading?.key !== key) loading = { key, promise: decodeClip(fromFile ? files : null, key) };
+    const { promise } = loading;
+    const loaded = await promise;
+    if (loading?.key !== key) return loadClip();
+    loading = null;
+    clip = loaded;
+    clipKey = key;
+    inputFrames = framesOf(clip);
+    ui.$('vt-input-caption').textContent = `input clip: ${clip.width}×${clip.height}, ${clip.frames} frames`;
+    return clip;
+  }
+
+  async function decodeClip(files, key) {
     const s = size();
     let loaded;
-    if (!fromFile) {
+    if (!files) {
       loaded = clipFromStrip(await loadImage(DEMO_CLIP), { width: s, height: s });
     } else if (files.length === 1 && files[0].type.startsWith('video/')) {
       loaded = await clipFromVideo(files[0], {
         width: s, height: s, frames: frameCount(),
-        onProgress: (t, n) => { ui.$('vt-readout').textContent = `decoding frame ${t}/${n}…`; },
+        onProgress: (t, n) => {
+          if (loading?.key === key) ui.$('vt-readout').textContent = `decoding frame ${t}/${n}…`;
+        },
       });
+      if (loading?.key === key) ui.$('vt-readout').textContent = `decoded ${loaded.frames} frames: press Run or Step`;
     } else {
       loaded = await clipFromImages(files, { width: s, height: s });
     }
@@ -93,11 +111,7 @@ export function createPanel(ui) {
       const bytes = loaded.width * loaded.height * 4;
       loaded = { ...loaded, frames: frameCount(), rgba: loaded.rgba.slice(0, bytes * frameCount()) };
     }
-    clip = loaded;
-    clipKey = key;
-    inputFrames = framesOf(clip);
-    ui.$('vt-input-caption').textContent = `input clip: ${clip.width}×${clip.height}, ${clip.frames} frames`;
-    return clip;
+    return loaded;
   }
 
   function options() {
