@@ -42,3 +42,27 @@ export function recordFrames(canvas, frames, fps, show) {
     next();
   });
 }
+
+/**
+ * The "Record WebM" button of a panel: records `frames` on `canvas` (shown with `show`), offers
+ * the video on `link` (its text from `describe(blob)`), and marks the page for the tests
+ * (`data-recorded-bytes`, `data-recorded-type`). The button says "recording…" meanwhile. Errors
+ * are the caller's to show.
+ */
+export async function recordToLink({ canvas, frames, fps, show, button, link, describe }) {
+  button.disabled = true;
+  button.textContent = 'recording…';
+  try {
+    const blob = await recordFrames(canvas, frames, fps, show);
+    if (link.href) URL.revokeObjectURL(link.href);
+    link.href = URL.createObjectURL(blob);
+    link.textContent = describe(blob);
+    link.hidden = false;
+    document.body.dataset.recordedBytes = String(blob.size);
+    document.body.dataset.recordedType = blob.type;
+    return blob;
+  } finally {
+    button.disabled = false;
+    button.textContent = 'Record WebM';
+  }
+}

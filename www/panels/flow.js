@@ -7,7 +7,7 @@ import { flowField } from '../pkg/texsynth.js';
 import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
 import { remoteSession } from '../lib/worker.js';
-import { recordFrames } from '../lib/record.js';
+import { recordToLink } from '../lib/record.js';
 
 export const id = 'flow';
 export const title = 'Flow animation';
@@ -150,23 +150,16 @@ export function createPanel(ui) {
   async function record() {
     if (frames.length < 2 || recording) return;
     recording = true;
-    ui.$('fl-record').disabled = true;
-    ui.$('fl-record').textContent = 'recording…';
     try {
-      const blob = await recordFrames(ui.$('fl-playback'), frames, PLAYBACK_FPS, showFrame);
-      const link = ui.$('fl-download');
-      if (link.href) URL.revokeObjectURL(link.href);
-      link.href = URL.createObjectURL(blob);
-      link.textContent = `download video (${frames.length} frames, ${(blob.size / 1024).toFixed(0)} KB WebM)`;
-      link.hidden = false;
-      document.body.dataset.recordedBytes = String(blob.size);
-      document.body.dataset.recordedType = blob.type;
+      await recordToLink({
+        canvas: ui.$('fl-playback'), frames, fps: PLAYBACK_FPS, show: showFrame,
+        button: ui.$('fl-record'), link: ui.$('fl-download'),
+        describe: (blob) => `download video (${frames.length} frames, ${(blob.size / 1024).toFixed(0)} KB WebM)`,
+      });
     } catch (error) {
       ui.$('fl-readout').textContent = `recording failed: ${error.message ?? error}`;
     } finally {
       recording = false;
-      ui.$('fl-record').disabled = false;
-      ui.$('fl-record').textContent = 'Record WebM';
     }
   }
 

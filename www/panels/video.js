@@ -6,7 +6,7 @@
 // with the frames on either side of it. When the synthesis is done the output plays in a loop and
 // can be recorded as WebM.
 import { clipFromImages, clipFromStrip, clipFromVideo, loadImage } from '../lib/video-input.js';
-import { recordFrames } from '../lib/record.js';
+import { recordToLink } from '../lib/record.js';
 import { remoteSession } from '../lib/worker.js';
 
 export const id = 'video';
@@ -219,23 +219,17 @@ export function createPanel(ui) {
   async function record() {
     if (output.length < 2 || recording) return;
     recording = true;
-    ui.$('vt-record').disabled = true;
-    ui.$('vt-record').textContent = 'recording…';
     try {
       // Twice round, so the video itself shows the loop point.
-      const blob = await recordFrames(ui.$('vt-playback'), [...output, ...output], PLAYBACK_FPS, show);
-      const link = ui.$('vt-download');
-      if (link.href) URL.revokeObjectURL(link.href);
-      link.href = URL.createObjectURL(blob);
-      link.textContent = `download video (${output.length} frames twice, ${(blob.size / 1024).toFixed(0)} KB WebM)`;
-      link.hidden = false;
-      document.body.dataset.recordedBytes = String(blob.size);
+      await recordToLink({
+        canvas: ui.$('vt-playback'), frames: [...output, ...output], fps: PLAYBACK_FPS, show,
+        button: ui.$('vt-record'), link: ui.$('vt-download'),
+        describe: (blob) => `download video (${output.length} frames twice, ${(blob.size / 1024).toFixed(0)} KB WebM)`,
+      });
     } catch (error) {
       ui.$('vt-readout').textContent = `recording failed: ${error.message ?? error}`;
     } finally {
       recording = false;
-      ui.$('vt-record').disabled = false;
-      ui.$('vt-record').textContent = 'Record WebM';
     }
   }
 
