@@ -66,18 +66,28 @@ impl Synthesis {
     pub fn seam_graph(&self, patch: Patch, force_new: &[usize]) -> SeamGraph {
         let canvas = &self.canvas;
         let footprint = self.footprint(patch);
-        let mut node_of = vec![u32::MAX; canvas.voxel_count()];
-        let mut inside = vec![false; canvas.voxel_count()];
+        // Voxels are found in the patch's box, not in tables the size of the output, which would
+        // cost as much to clear as the output has voxels at every placement.
+        let (w, h, _) = canvas.size();
+        let [xs, ys, ts] = self.footprint_box(patch);
+        let (bw, bh) = (xs.len(), ys.len());
+        let local = |j: usize| -> Option<usize> {
+            let (x, y, t) = (j % w, (j / w) % h, j / (w * h));
+            (xs.contains(&x) && ys.contains(&y) && ts.contains(&t))
+                .then(|| ((t - ts.start) * bh + (y - ys.start)) * bw + (x - xs.start))
+        };
+        let inside = |j: usize| local(j).is_some();
+        let mut nodes = vec![u32::MAX; footprint.len()];
         let mut g = SeamGraph::default();
         for &i in &footprint {
-            inside[i] = true;
             if canvas.label[i] == UNCOVERED {
                 g.uncovered.push(i);
             } else {
-                node_of[i] = g.voxels.len() as u32;
+                nodes[local(i).expect("footprint voxels lie in its box")] = g.voxels.len() as u32;
                 g.voxels.push(i);
             }
         }
+        let node_of = |j: usize| local(j).map_or(u32::MAX, |k| nodes[k]);
         g.nodes = g.voxels.len();
         for (n, &i) in g.voxels.iter().enumerate() {
             let n = n as u32;
@@ -85,22 +95,22 @@ impl Synthesis {
                 [canvas.next(i, axis), canvas.prev(i, axis)]
                     .into_iter()
                     .flatten()
-                    .any(|j| !inside[j] && canvas.label[j] != UNCOVERED)
+                    .any(|j| !inside(j) && canvas.label[j] != UNCOVERED)
             });
             if border || canvas.fixed[i] {
                 g.terminals.push((n, HARD_CONSTRAINT, 0.0));
             }
         }
         for &i in force_new {
-            if node_of[i] != u32::MAX && !canvas.fixed[i] {
-                g.terminals.push((node_of[i], 0.0, HARD_CONSTRAINT));
+            if node_of(i) != u32::MAX && !canvas.fixed[i] {
+                g.terminals.push((node_of(i), 0.0, HARD_CONSTRAINT));
             }
         }
         // Every edge with at least one covered end inside the patch, seen once from its first
         // voxel s (t = s's next neighbour along the axis).
         for &s in &footprint {
             for axis in AXES {
-                let Some(t) = canvas.next(s, axis).filter(|&t| inside[t]) else {
+                let Some(t) = canvas.next(s, axis).filter(|&t| inside(t)) else {
                     continue;
                 };
                 self.add_edge(&mut g, &node_of, s, t, axis, patch);
@@ -112,7 +122,7 @@ impl Synthesis {
     fn add_edge(
         &self,
         g: &mut SeamGraph,
-        node_of: &[u32],
+        node_of: &impl Fn(usize) -> u32,
         s: usize,
         t: usize,
         axis: Axis,
@@ -126,22 +136,22 @@ impl Synthesis {
                 g.nodes += 1;
                 let to_s = self.seam_cost(s, t, axis, a_s, patch);
                 let to_t = self.seam_cost(s, t, axis, patch, a_t);
-                g.edges.push((node_of[s], seam, to_s));
-                g.edges.push((seam, node_of[t], to_t));
+                g.edges.push((node_of(s), seam, to_s));
+                g.edges.push((seam, node_of(t), to_t));
                 g.terminals.push((seam, 0.0, old));
             }
             (Some(a), Some(_)) => {
                 let cost = self.seam_cost(s, t, axis, a, patch);
-                g.edges.push((node_of[s], node_of[t], cost));
+                g.edges.push((node_of(s), node_of(t), cost));
             }
             (Some(a), None) => {
                 // t is new and takes B: cut when s keeps A.
                 let cost = self.seam_cost(s, t, axis, a, patch);
-                g.terminals.push((node_of[s], 0.0, cost));
+                g.terminals.push((node_of(s), 0.0, cost));
             }
             (None, Some(a)) => {
                 let cost = self.seam_cost(s, t, axis, patch, a);
-                g.terminals.push((node_of[t], 0.0, cost));
+                g.terminals.push((node_of(t), 0.0, cost));
             }
         }
     }

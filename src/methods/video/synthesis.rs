@@ -79,18 +79,8 @@ impl Synthesis {
     /// The output voxels `patch` covers, in source scan order.
     #[must_use]
     pub fn footprint(&self, patch: Patch) -> Vec<usize> {
-        let v = &self.sources[patch.source as usize].volume;
-        let (w, h, d) = self.canvas.size();
-        let range = |offset: i32, len: usize, size: usize| {
-            let first = i64::from(offset).max(0);
-            let last = (i64::from(offset) + len as i64).min(size as i64);
-            first as usize..last.max(first) as usize
-        };
-        let (xs, ys, ts) = (
-            range(patch.tx, v.width(), w),
-            range(patch.ty, v.height(), h),
-            range(patch.tt, v.frames(), d),
-        );
+        let (w, h, _) = self.canvas.size();
+        let [xs, ys, ts] = self.footprint_box(patch);
         let mut out = Vec::with_capacity(xs.len() * ys.len() * ts.len());
         for t in ts {
             for y in ys.clone() {
@@ -99,5 +89,23 @@ impl Synthesis {
             }
         }
         out
+    }
+
+    /// The x, y and t ranges of the output the patch covers (the box [`Synthesis::footprint`]
+    /// lists in t, y, x order).
+    #[must_use]
+    pub fn footprint_box(&self, patch: Patch) -> [std::ops::Range<usize>; 3] {
+        let v = &self.sources[patch.source as usize].volume;
+        let (w, h, d) = self.canvas.size();
+        let range = |offset: i32, len: usize, size: usize| {
+            let first = i64::from(offset).max(0);
+            let last = (i64::from(offset) + len as i64).min(size as i64);
+            first as usize..last.max(first) as usize
+        };
+        [
+            range(patch.tx, v.width(), w),
+            range(patch.ty, v.height(), h),
+            range(patch.tt, v.frames(), d),
+        ]
     }
 }
