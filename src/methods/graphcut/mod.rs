@@ -11,6 +11,7 @@ pub mod options;
 pub mod overlap;
 pub mod placement;
 pub mod seam;
+pub mod seam_graph;
 pub mod session;
 pub mod source;
 pub mod synthesis;

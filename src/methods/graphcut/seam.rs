@@ -1,18 +1,11 @@
-//! Laying a patch down along the minimum-cost seam (sections 3, 3.1 and 3.2).
-//!
-//! The graph has a node per output pixel under the patch. The source terminal is A, the
-//! existing output; the sink terminal is B, the new patch. Pixels no patch covered yet must take
-//! B; covered pixels on the border of the patch whose outside neighbour is covered must keep A
-//! (a surrounded region keeps its border). Neighbouring pixels are joined by an arc of cost
-//! M(s, t, A, B). Where an old seam runs between two pixels, a seam node sits between them with
-//! arcs M(s, t, A_s, B) and M(s, t, B, A_t) to the pixels and an arc of the old seam's cost to B:
-//! cutting that arc keeps the old seam, cutting a pixel arc makes a new seam there, and cutting
-//! neither overwrites the seam (it then costs nothing).
+//! Laying a patch down along the minimum-cost seam (sections 3, 3.1 and 3.2): the graph is the
+//! shared one of `seam_graph.rs` over 4-connected pixels (video uses it over voxels); here, what
+//! a placement does with its cut, and the seam memory it keeps.
 
 use super::canvas::{Patch, UNCOVERED};
+use super::seam_graph::{Footprint, SeamGraph, SeamGrid};
 use super::synthesis::Synthesis;
 use crate::core::Result;
-use crate::solvers::maxflow::{Graph, HARD_CONSTRAINT};
 
 /// What a placement did.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -39,9 +32,8 @@ impl Synthesis {
     ) -> Result<Placed> {
         let footprint = self.footprint(patch);
         let (w, h) = (self.canvas.width, self.canvas.height);
-        // Node of every output pixel under the patch, indexed within the patch's rectangle: a
-        // table the size of the output would cost as much to clear as a 4096x4096 output has
-        // pixels, at every placement.
+        // Pixels are found within the patch's rectangle: a table the size of the output would
+        // cost as much to clear as a 4096x4096 output has pixels, at every placement.
         let (pw, ph) = self.patch_extent(patch.source as usize);
         let wrap = self.canvas.wrap;
         let local = |j: usize| -> Option<usize> {
@@ -56,85 +48,22 @@ impl Synthesis {
             ((0..pw as i64).contains(&u) && (0..ph as i64).contains(&v))
                 .then(|| v as usize * pw + u as usize)
         };
-        let canvas = &self.canvas;
-        let covered = |i: usize| canvas.label[i] != UNCOVERED;
-        // Only covered pixels get a node. An uncovered pixel must take B, so it would sit on the
-        // sink's side with an infinite arc: its arc to a covered neighbour is the same as an arc
-        // from that neighbour to the sink, and the graph shrinks to the overlap (about half the
-        // patch while the output is being covered).
-        let mut nodes = vec![u32::MAX; pw * ph];
-        let mut node_count = 0usize;
-        for &i in footprint.iter().filter(|&&i| covered(i)) {
-            nodes[local(i).expect("footprint pixels lie under the patch")] = node_count as u32;
-            node_count += 1;
+        let mut keep = vec![false; pw * ph];
+        for k in keep_old.iter().filter_map(|&i| local(i)) {
+            keep[k] = true;
         }
-        let node_of = |j: usize| local(j).map(|k| nodes[k]).filter(|&n| n != u32::MAX);
-        let mut graph = Graph::with_capacity(node_count, 2 * node_count)?;
-        for &i in &footprint {
-            let Some(n) = node_of(i) else { continue };
-            let neighbours = [canvas.right(i), canvas.down(i), self.left(i), self.up(i)];
-            if neighbours
-                .into_iter()
-                .flatten()
-                .any(|j| local(j).is_none() && covered(j))
-            {
-                graph.add_terminal(n as usize, HARD_CONSTRAINT, 0.0)?;
-            }
-        }
-        for n in keep_old.iter().filter_map(|&i| node_of(i)) {
-            graph.add_terminal(n as usize, HARD_CONSTRAINT, 0.0)?;
-        }
-        for n in force_new.iter().filter_map(|&i| node_of(i)) {
-            graph.add_terminal(n as usize, 0.0, HARD_CONSTRAINT)?;
-        }
-        for &s in &footprint {
-            for (t, horizontal) in [(canvas.right(s), true), (canvas.down(s), false)] {
-                let Some(t) = t.filter(|&t| local(t).is_some()) else {
-                    continue;
-                };
-                match (self.patch_of(s), self.patch_of(t)) {
-                    (None, None) => {}
-                    (Some(a_s), Some(a_t)) if a_s != a_t => {
-                        // An old seam: its node, its cost to B, and the two new-seam arcs.
-                        let (n, m) = (node_of(s).expect("covered"), node_of(t).expect("covered"));
-                        let old = if horizontal {
-                            canvas.h_seam[s]
-                        } else {
-                            canvas.v_seam[s]
-                        };
-                        let seam = graph.add_node();
-                        let to_s = self.seam_cost(s, t, horizontal, a_s, patch);
-                        let to_t = self.seam_cost(s, t, horizontal, patch, a_t);
-                        graph.add_edge(n as usize, seam, to_s, to_s)?;
-                        graph.add_edge(seam, m as usize, to_t, to_t)?;
-                        graph.add_terminal(seam, 0.0, old)?;
-                    }
-                    (a_s, a_t) => {
-                        // The same old patch A on both sides, or one pixel uncovered (it takes
-                        // B): the seam left if a covered pixel keeps A costs M(A, B). With one
-                        // uncovered, only that pixel's ||A - B|| counts: A does not reach the
-                        // uncovered one (match_cost), whatever the empty canvas shows there.
-                        let a = a_s.or(a_t).expect("one of them is covered");
-                        let cost = self.seam_cost(s, t, horizontal, a, patch);
-                        match (node_of(s), node_of(t)) {
-                            (Some(n), Some(m)) => {
-                                graph.add_edge(n as usize, m as usize, cost, cost)?
-                            }
-                            (Some(n), None) | (None, Some(n)) => {
-                                graph.add_terminal(n as usize, 0.0, cost)?;
-                            }
-                            (None, None) => unreachable!("one of them is covered"),
-                        }
-                    }
-                }
-            }
-        }
-        let cut_cost = graph.maxflow();
-        let taken: Vec<usize> = footprint
-            .iter()
-            .copied()
-            .filter(|&i| node_of(i).is_none_or(|n| !graph.is_source_side(n as usize)))
-            .collect();
+        let graph = SeamGraph::new(
+            self,
+            &Footprint {
+                cells: &footprint,
+                local,
+                box_len: pw * ph,
+            },
+            patch,
+            force_new,
+            |i| local(i).is_some_and(|k| keep[k]),
+        );
+        let (cut_cost, taken) = graph.solve()?;
         let index = self.canvas.patches.len();
         self.canvas.patches.push(patch);
         self.used.insert(patch);
@@ -208,5 +137,40 @@ impl Synthesis {
         } else {
             None
         }
+    }
+}
+
+/// Pixels as the seam graph's grid: axis 0 joins a pixel to its right neighbour, axis 1 to the
+/// one below, wrapping where the output wraps.
+impl SeamGrid for Synthesis {
+    type Label = Patch;
+    const AXES: usize = 2;
+
+    fn next(&self, i: usize, axis: usize) -> Option<usize> {
+        if axis == 0 {
+            self.canvas.right(i)
+        } else {
+            self.canvas.down(i)
+        }
+    }
+
+    fn prev(&self, i: usize, axis: usize) -> Option<usize> {
+        if axis == 0 { self.left(i) } else { self.up(i) }
+    }
+
+    fn label_of(&self, i: usize) -> Option<Patch> {
+        self.patch_of(i)
+    }
+
+    fn old_seam(&self, s: usize, axis: usize) -> f32 {
+        if axis == 0 {
+            self.canvas.h_seam[s]
+        } else {
+            self.canvas.v_seam[s]
+        }
+    }
+
+    fn seam_cost(&self, s: usize, t: usize, axis: usize, a: Patch, b: Patch) -> f32 {
+        Synthesis::seam_cost(self, s, t, axis == 0, a, b)
     }
 }

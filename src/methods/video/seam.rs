@@ -1,53 +1,14 @@
 //! Laying a spatio-temporal patch down along the minimum-cost seam surface (sections 3, 3.1, 3.2
-//! and 7): the image version's graph, over 6-connected voxels instead of 4-connected pixels.
-//!
-//! The source terminal is A, the existing output; the sink is B, the new patch. Voxels no patch
-//! covered yet must take B; covered voxels on the border of the patch whose outside neighbour is
-//! covered must keep A (a surrounded region keeps its border), and so must fixed voxels (the
-//! constrained frames of 7.D: "links of infinite cost between these pixels and the patches they
-//! are constrained to copy from"). Neighbours are joined by an arc of cost M(s, t, A, B); where an
-//! old seam runs between them, a seam node sits between them with arcs M(s, t, A_s, B) and
-//! M(s, t, B, A_t) and an arc of the old seam's cost to B (section 3.1).
-//!
-//! One saving over the image version: an uncovered voxel is forced to B anyway, so it gets no
-//! node. Its arc to a covered neighbour n becomes a terminal arc n -> B of the same cost (cut
-//! exactly when n keeps A), and uncovered voxels away from the overlap cost nothing at all. While
-//! a video is being covered most of a patch is new, so the graph shrinks to the overlap.
+//! and 7): the image version's seam graph (`graphcut/seam_graph.rs`) over 6-connected voxels,
+//! with the fixed frames of 7.D held to what they show ("links of infinite cost between these
+//! pixels and the patches they are constrained to copy from").
 
 use super::canvas::{Patch, UNCOVERED};
-use super::source::{AXES, Axis};
+use super::source::AXES;
 use super::synthesis::Synthesis;
 use crate::core::Result;
-use crate::solvers::maxflow::{Graph, HARD_CONSTRAINT};
-
-/// The graph of one placement as plain data, so that tests can hand it to a reference solver.
-#[derive(Debug, Clone, Default)]
-pub struct SeamGraph {
-    /// Node count: the covered voxels under the patch first (`voxels[n]` is node n's voxel), then
-    /// the seam nodes.
-    pub nodes: usize,
-    pub voxels: Vec<usize>,
-    /// Undirected arcs (a, b, capacity).
-    pub edges: Vec<(u32, u32, f32)>,
-    /// (node, capacity from A, capacity to B).
-    pub terminals: Vec<(u32, f32, f32)>,
-    /// The uncovered voxels under the patch: they take B whatever the cut.
-    pub uncovered: Vec<usize>,
-}
-
-impl SeamGraph {
-    /// The solver's graph.
-    pub fn build(&self) -> Result<Graph> {
-        let mut graph = Graph::with_capacity(self.nodes, self.edges.len())?;
-        for &(a, b, c) in &self.edges {
-            graph.add_edge(a as usize, b as usize, c, c)?;
-        }
-        for &(n, a, b) in &self.terminals {
-            graph.add_terminal(n as usize, a, b)?;
-        }
-        Ok(graph)
-    }
-}
+pub use crate::methods::graphcut::seam_graph::SeamGraph;
+use crate::methods::graphcut::seam_graph::{Footprint, SeamGrid};
 
 /// What a placement did.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -61,14 +22,14 @@ pub struct Placed {
 }
 
 impl Synthesis {
-    /// The seam graph for placing `patch`; `force_new` voxels must take it (the centre of a
-    /// covered error region, so a refinement cannot be rejected whole).
+    /// The seam graph for placing `patch` (the image version's, over 6-connected voxels);
+    /// `force_new` voxels must take it (the centre of a covered error region, so a refinement
+    /// cannot be rejected whole); fixed voxels (7.D) keep what they show.
     pub fn seam_graph(&self, patch: Patch, force_new: &[usize]) -> SeamGraph {
-        let canvas = &self.canvas;
         let footprint = self.footprint(patch);
         // Voxels are found in the patch's box, not in tables the size of the output, which would
         // cost as much to clear as the output has voxels at every placement.
-        let (w, h, _) = canvas.size();
+        let (w, h, _) = self.canvas.size();
         let [xs, ys, ts] = self.footprint_box(patch);
         let (bw, bh) = (xs.len(), ys.len());
         let local = |j: usize| -> Option<usize> {
@@ -76,102 +37,24 @@ impl Synthesis {
             (xs.contains(&x) && ys.contains(&y) && ts.contains(&t))
                 .then(|| ((t - ts.start) * bh + (y - ys.start)) * bw + (x - xs.start))
         };
-        let inside = |j: usize| local(j).is_some();
-        let mut nodes = vec![u32::MAX; footprint.len()];
-        let mut g = SeamGraph::default();
-        for &i in &footprint {
-            if canvas.label[i] == UNCOVERED {
-                g.uncovered.push(i);
-            } else {
-                nodes[local(i).expect("footprint voxels lie in its box")] = g.voxels.len() as u32;
-                g.voxels.push(i);
-            }
-        }
-        let node_of = |j: usize| local(j).map_or(u32::MAX, |k| nodes[k]);
-        g.nodes = g.voxels.len();
-        for (n, &i) in g.voxels.iter().enumerate() {
-            let n = n as u32;
-            let border = AXES.iter().any(|&axis| {
-                [canvas.next(i, axis), canvas.prev(i, axis)]
-                    .into_iter()
-                    .flatten()
-                    .any(|j| !inside(j) && canvas.label[j] != UNCOVERED)
-            });
-            if border || canvas.fixed[i] {
-                g.terminals.push((n, HARD_CONSTRAINT, 0.0));
-            }
-        }
-        for &i in force_new {
-            if node_of(i) != u32::MAX && !canvas.fixed[i] {
-                g.terminals.push((node_of(i), 0.0, HARD_CONSTRAINT));
-            }
-        }
-        // Every edge with at least one covered end inside the patch, seen once from its first
-        // voxel s (t = s's next neighbour along the axis).
-        for &s in &footprint {
-            for axis in AXES {
-                let Some(t) = canvas.next(s, axis).filter(|&t| inside(t)) else {
-                    continue;
-                };
-                self.add_edge(&mut g, &node_of, s, t, axis, patch);
-            }
-        }
-        g
-    }
-
-    fn add_edge(
-        &self,
-        g: &mut SeamGraph,
-        node_of: &impl Fn(usize) -> u32,
-        s: usize,
-        t: usize,
-        axis: Axis,
-        patch: Patch,
-    ) {
-        match (self.patch_of(s), self.patch_of(t)) {
-            (None, None) => {}
-            (Some(a_s), Some(a_t)) if a_s != a_t => {
-                let old = self.canvas.seam[axis as usize][s];
-                let seam = g.nodes as u32;
-                g.nodes += 1;
-                let to_s = self.seam_cost(s, t, axis, a_s, patch);
-                let to_t = self.seam_cost(s, t, axis, patch, a_t);
-                g.edges.push((node_of(s), seam, to_s));
-                g.edges.push((seam, node_of(t), to_t));
-                g.terminals.push((seam, 0.0, old));
-            }
-            (Some(a), Some(_)) => {
-                let cost = self.seam_cost(s, t, axis, a, patch);
-                g.edges.push((node_of(s), node_of(t), cost));
-            }
-            (Some(a), None) => {
-                // t is new and takes B: cut when s keeps A.
-                let cost = self.seam_cost(s, t, axis, a, patch);
-                g.terminals.push((node_of(s), 0.0, cost));
-            }
-            (None, Some(a)) => {
-                let cost = self.seam_cost(s, t, axis, patch, a);
-                g.terminals.push((node_of(t), 0.0, cost));
-            }
-        }
+        SeamGraph::new(
+            self,
+            &Footprint {
+                cells: &footprint,
+                local,
+                box_len: footprint.len(),
+            },
+            patch,
+            force_new,
+            |i| self.canvas.fixed[i],
+        )
     }
 
     /// Places `patch` with the seam surface the graph cut chooses.
     pub fn place(&mut self, patch: Patch, force_new: &[usize]) -> Result<Placed> {
-        let g = self.seam_graph(patch, force_new);
-        let mut graph = g.build()?;
-        let cut_cost = graph.maxflow();
+        let (cut_cost, taken) = self.seam_graph(patch, force_new).solve()?;
         let index = self.canvas.patches.len();
         self.canvas.patches.push(patch);
-        let mut taken = g.uncovered.clone();
-        taken.extend(
-            g.voxels
-                .iter()
-                .enumerate()
-                .filter(|&(n, _)| !graph.is_source_side(n))
-                .map(|(_, &i)| i),
-        );
-        drop(graph);
         self.take(index, patch, &taken);
         Ok(Placed {
             index,
@@ -215,5 +98,31 @@ impl Synthesis {
                 }
             }
         }
+    }
+}
+
+/// Voxels as the seam graph's grid: axes x, y and t.
+impl SeamGrid for Synthesis {
+    type Label = Patch;
+    const AXES: usize = 3;
+
+    fn next(&self, i: usize, axis: usize) -> Option<usize> {
+        self.canvas.next(i, AXES[axis])
+    }
+
+    fn prev(&self, i: usize, axis: usize) -> Option<usize> {
+        self.canvas.prev(i, AXES[axis])
+    }
+
+    fn label_of(&self, i: usize) -> Option<Patch> {
+        self.patch_of(i)
+    }
+
+    fn old_seam(&self, s: usize, axis: usize) -> f32 {
+        self.canvas.seam[axis][s]
+    }
+
+    fn seam_cost(&self, s: usize, t: usize, axis: usize, a: Patch, b: Patch) -> f32 {
+        Synthesis::seam_cost(self, s, t, AXES[axis], a, b)
     }
 }

@@ -62,7 +62,7 @@ fn the_3d_seam_graph_max_flow_equals_the_reference_solver() {
     for seed in 0..12 {
         let (s, patch) = three_patches(seed);
         let g = s.seam_graph(patch, &[]);
-        with_seam_nodes += usize::from(g.nodes > g.voxels.len());
+        with_seam_nodes += usize::from(g.nodes > g.cells.len());
         let spec = Spec {
             nodes: g.nodes,
             edges: g
