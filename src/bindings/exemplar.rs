@@ -5,7 +5,8 @@ use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
 use super::pixels::{image_from_image_data, render_into};
-use crate::core::{Image, decode, encode_png, from_rgba8, to_rgba8};
+use crate::core::sample::shrink_area;
+use crate::core::{Error, Image, decode, encode_png, from_rgba8, to_rgba8};
 
 /// An example texture, decoded and held in wasm memory.
 #[wasm_bindgen]
@@ -72,6 +73,50 @@ impl Exemplar {
     #[wasm_bindgen(js_name = toPng)]
     pub fn to_png(&self) -> JsResult<Uint8Array> {
         Ok(Uint8Array::from(encode_png(&self.image)?.as_slice()))
+    }
+
+    /// A copy whose longer side is at most `maxSide`, shrunk by area averaging (a camera photo
+    /// becomes a working-size exemplar; its fine texture stays texture instead of aliasing). An
+    /// exemplar already within `maxSide` is copied unchanged.
+    pub fn resized(&self, max_side: f64) -> JsResult<Exemplar> {
+        if !max_side.is_finite() || max_side < 1.0 || max_side.fract() != 0.0 {
+            return Err(Error::InvalidParameter {
+                name: "maxSide",
+                reason: format!("must be a whole number of pixels, at least 1, got {max_side}"),
+            }
+            .into());
+        }
+        let (w, h) = (self.image.width(), self.image.height());
+        let longer = w.max(h) as f64;
+        if longer <= max_side {
+            return Ok(Exemplar::from_image(self.image.clone()));
+        }
+        let factor = max_side / longer;
+        let side = |len: usize| ((len as f64 * factor).round() as usize).clamp(1, len);
+        Ok(Exemplar::from_image(shrink_area(
+            &self.image,
+            side(w),
+            side(h),
+        )?))
+    }
+
+    /// The `width` x `height` rectangle whose top-left corner is (`x`, `y`), as a new exemplar
+    /// (a region of a photo dragged on the page). It must lie inside the exemplar.
+    pub fn cropped(&self, x: f64, y: f64, width: f64, height: f64) -> JsResult<Exemplar> {
+        let whole = |name: &'static str, v: f64| -> JsResult<usize> {
+            if v.is_finite() && v >= 0.0 && v.fract() == 0.0 && v <= 1e9 {
+                Ok(v as usize)
+            } else {
+                Err(Error::InvalidParameter {
+                    name,
+                    reason: format!("must be a whole, non-negative number of pixels, got {v}"),
+                }
+                .into())
+            }
+        };
+        let (x, y) = (whole("x", x)?, whole("y", y)?);
+        let (w, h) = (whole("width", width)?, whole("height", height)?);
+        Ok(Exemplar::from_image(self.image.crop(x, y, w, h)?))
     }
 }
 

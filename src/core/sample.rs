@@ -1,6 +1,7 @@
-//! Bilinear sampling and resizing to any size. Coordinates put pixel (i, j)'s centre at (i, j).
+//! Bilinear and bicubic sampling, resizing to any size, and shrinking by area averaging. Coordinates
+//! put pixel (i, j)'s centre at (i, j).
 
-use super::error::Result;
+use super::error::{Error, Result};
 use super::image::Image;
 
 /// What lies beyond the border: the border pixel repeated, or the image repeated periodically
@@ -111,9 +112,76 @@ pub fn resize_bilinear(image: &Image, width: usize, height: usize, edge: Edge) -
     Ok(out)
 }
 
+/// Shrinks `image` to `ow` x `oh` (each at most the image's own side) by area averaging: each
+/// output pixel is the mean of the source area it covers, so nothing aliases (a photo shrunk to
+/// an exemplar keeps its fine texture as texture, not as noise).
+pub fn shrink_area(image: &Image, ow: usize, oh: usize) -> Result<Image> {
+    let (w, h, c) = (image.width(), image.height(), image.channels());
+    if ow == 0 || oh == 0 || ow > w || oh > h {
+        return Err(Error::InvalidSize {
+            what: "shrunk image",
+            width: ow,
+            height: oh,
+            reason: format!("must be at least 1x1 and at most the {w}x{h} image"),
+        });
+    }
+    let (fx, fy) = (w as f64 / ow as f64, h as f64 / oh as f64);
+    // Per output column: the source columns it covers and their weights.
+    let spans = |out_len: usize, step: f64, in_len: usize| -> Vec<Vec<(usize, f64)>> {
+        (0..out_len)
+            .map(|i| {
+                let (a, b) = (i as f64 * step, (i as f64 + 1.0) * step);
+                (a.floor() as usize..(b.ceil() as usize).min(in_len))
+                    .map(|s| (s, (b.min(s as f64 + 1.0) - a.max(s as f64)) / step))
+                    .filter(|&(_, wgt)| wgt > 0.0)
+                    .collect()
+            })
+            .collect()
+    };
+    let (cols, rows) = (spans(ow, fx, w), spans(oh, fy, h));
+    let mut out = Image::new(ow, oh, c)?;
+    for (y, row) in rows.iter().enumerate() {
+        for (x, col) in cols.iter().enumerate() {
+            let mut acc = [0.0f64; 4];
+            for &(sy, wy) in row {
+                for &(sx, wx) in col {
+                    for (a, v) in acc.iter_mut().zip(image.pixel(sx, sy)) {
+                        *a += wx * wy * f64::from(*v);
+                    }
+                }
+            }
+            for (o, a) in out.pixel_mut(x, y).iter_mut().zip(acc) {
+                *o = a as f32;
+            }
+        }
+    }
+    Ok(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn shrinking_averages_areas_and_refuses_to_enlarge() {
+        // 6x4 to 3x2: every output pixel is the mean of a 2x2 block exactly.
+        let img = Image::from_fn(6, 4, 1, |x, y, _| (x + 10 * y) as f32).unwrap();
+        let out = shrink_area(&img, 3, 2).unwrap();
+        for (x, y) in [(0, 0), (2, 1), (1, 1)] {
+            let block = [(0, 0), (1, 0), (0, 1), (1, 1)]
+                .iter()
+                .map(|&(dx, dy)| img.pixel(2 * x + dx, 2 * y + dy)[0])
+                .sum::<f32>()
+                / 4.0;
+            assert!((out.pixel(x, y)[0] - block).abs() < 1e-5);
+        }
+        // A non-integer ratio keeps the image's mean.
+        let odd = shrink_area(&img, 4, 3).unwrap();
+        let mean = |i: &Image| i.data().iter().sum::<f32>() / i.data().len() as f32;
+        assert!((mean(&odd) - mean(&img)).abs() < 1e-4);
+        assert!(shrink_area(&img, 7, 4).is_err());
+        assert!(shrink_area(&img, 0, 2).is_err());
+    }
 
     #[test]
     fn sampling_at_pixel_centres_returns_the_pixel() {

@@ -91,3 +91,41 @@ fn forged_huge_png_header_is_an_error() {
         "{msg}"
     );
 }
+
+/// A large photo becomes a working-size exemplar: shrunk (area averaging, the mean kept) or a
+/// region cropped; bad sizes are named errors.
+#[wasm_bindgen_test]
+fn a_large_exemplar_is_resized_or_cropped() {
+    let ex = Exemplar::from_bytes(TILES_128).unwrap();
+    let mean = |e: &Exemplar| {
+        let rgba = e.to_rgba().to_vec();
+        rgba.chunks(4)
+            .map(|p| f64::from(p[0]) + f64::from(p[1]) + f64::from(p[2]))
+            .sum::<f64>()
+            / (rgba.len() / 4) as f64
+    };
+    let small = ex.resized(50.0).unwrap();
+    assert_eq!((small.width(), small.height()), (50, 50));
+    assert!(
+        (mean(&small) - mean(&ex)).abs() < 2.0,
+        "area averaging keeps the mean"
+    );
+    let same = ex.resized(4000.0).unwrap();
+    assert_eq!(
+        same.to_rgba().to_vec(),
+        ex.to_rgba().to_vec(),
+        "already small enough"
+    );
+    let region = ex.cropped(10.0, 20.0, 64.0, 32.0).unwrap();
+    assert_eq!((region.width(), region.height()), (64, 32));
+    let (whole, part) = (ex.to_rgba().to_vec(), region.to_rgba().to_vec());
+    assert_eq!(
+        &part[..4],
+        &whole[(20 * 128 + 10) * 4..(20 * 128 + 10) * 4 + 4]
+    );
+    assert!(error_message(ex.resized(0.0)).contains("maxSide"));
+    assert!(error_message(ex.resized(f64::NAN)).contains("maxSide"));
+    assert!(error_message(ex.cropped(100.0, 0.0, 64.0, 64.0)).contains("does not fit"));
+    assert!(error_message(ex.cropped(-1.0, 0.0, 8.0, 8.0)).contains('x'));
+    assert!(error_message(ex.cropped(0.0, 0.0, 0.0, 8.0)).contains("crop"));
+}

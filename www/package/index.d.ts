@@ -70,6 +70,10 @@ export class Exemplar {
   toPng(): Uint8Array;
   /** The exemplar as a new RGBA8 array. */
   toRgba(): Uint8ClampedArray;
+  /** A copy whose longer side is at most `maxSide`, shrunk by area averaging (unchanged if already within). */
+  resized(maxSide: number): Exemplar;
+  /** The `width` x `height` rectangle at (`x`, `y`), which must lie inside, as a new exemplar. */
+  cropped(x: number, y: number, width: number, height: number): Exemplar;
   /** 1 (grey), 2 (grey + alpha), 3 (RGB) or 4 (RGBA). */
   readonly channels: number;
   readonly width: number;

@@ -8,7 +8,7 @@
 //! lies inside the source: no pixel is read from past the border. Scaling keeps the pixels whose
 //! centres map inside the source, and shrinks by area averaging so that nothing aliases.
 
-use crate::core::sample::sample_bicubic;
+use crate::core::sample::{sample_bicubic, shrink_area};
 use crate::core::{Edge, Error, Image, Result};
 
 /// The smallest side a deformed texture may have: a neighbourhood of the syntheses must fit.
@@ -346,44 +346,14 @@ fn scale(image: &Image, factor: f64) -> Result<Image> {
     Ok(out)
 }
 
-/// Area averaging: each output pixel is the mean of the source area it covers.
+/// Area averaging (see [`shrink_area`]) by `factor` < 1.
 fn shrink(image: &Image, factor: f64) -> Result<Image> {
-    let (w, h, c) = (image.width(), image.height(), image.channels());
-    let (ow, oh) = (
+    let (w, h) = (image.width(), image.height());
+    shrink_area(
+        image,
         ((w as f64 * factor).round() as usize).max(1),
         ((h as f64 * factor).round() as usize).max(1),
-    );
-    let (fx, fy) = (w as f64 / ow as f64, h as f64 / oh as f64);
-    // Per output column: the source columns it covers and their weights.
-    let spans = |out_len: usize, step: f64, in_len: usize| -> Vec<Vec<(usize, f64)>> {
-        (0..out_len)
-            .map(|i| {
-                let (a, b) = (i as f64 * step, (i as f64 + 1.0) * step);
-                (a.floor() as usize..(b.ceil() as usize).min(in_len))
-                    .map(|s| (s, (b.min(s as f64 + 1.0) - a.max(s as f64)) / step))
-                    .filter(|&(_, wgt)| wgt > 0.0)
-                    .collect()
-            })
-            .collect()
-    };
-    let (cols, rows) = (spans(ow, fx, w), spans(oh, fy, h));
-    let mut out = Image::new(ow, oh, c)?;
-    for (y, row) in rows.iter().enumerate() {
-        for (x, col) in cols.iter().enumerate() {
-            let mut acc = [0.0f64; 4];
-            for &(sy, wy) in row {
-                for &(sx, wx) in col {
-                    for (a, v) in acc.iter_mut().zip(image.pixel(sx, sy)) {
-                        *a += wx * wy * f64::from(*v);
-                    }
-                }
-            }
-            for (o, a) in out.pixel_mut(x, y).iter_mut().zip(acc) {
-                *o = a as f32;
-            }
-        }
-    }
-    Ok(out)
+    )
 }
 
 #[cfg(test)]

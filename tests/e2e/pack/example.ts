@@ -27,6 +27,7 @@ async function everything(): Promise<void> {
   const ex2 = Exemplar.fromRgba(ex.toRgba(), ex.width, ex.height);
   Exemplar.fromImageData({ data: ex.toRgba(), width: ex.width, height: ex.height });
   const png: Uint8Array = ex.toPng();
+  const working: Exemplar = ex.resized(256).cropped(0, 0, 32, 32);
   const rgba = new Uint8ClampedArray(256 * 256 * 4);
   ex.renderInto(rgba);
   const channels: number = ex.channels;
