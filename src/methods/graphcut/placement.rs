@@ -5,8 +5,8 @@
 use super::canvas::{Patch, UNCOVERED};
 use super::options::Placement;
 use super::synthesis::Synthesis;
-use crate::core::{Image, Result};
-use crate::solvers::fft_ssd::Boundary;
+use crate::core::{Error, Image, Result};
+use crate::solvers::fft_ssd::{Boundary, MAX_TRANSFORM_VALUES, transform_size};
 
 /// A rectangle of the output (it may run past the right or bottom border when wrapping).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -55,6 +55,44 @@ impl Synthesis {
             width: side,
             height: side,
         }
+    }
+
+    /// Refuses, before any step, an exemplar whose search window would need a transform larger
+    /// than the FFT search allows (a camera photo used whole: every patch is the whole source).
+    pub fn check_search_size(&self) -> Result<()> {
+        if self.options.placement == Placement::Random {
+            return Ok(());
+        }
+        let side = self
+            .options
+            .error_region_side(self.sources[0].width(), self.sources[0].height());
+        let (w, h) = (self.canvas.width, self.canvas.height);
+        // The window is largest where the border does not clip it: the region in the middle.
+        let region = Region {
+            x: w.saturating_sub(side) / 2,
+            y: h.saturating_sub(side) / 2,
+            width: side,
+            height: side,
+        };
+        for s in 0..self.sources.len() {
+            let (pw, ph) = self.patch_extent(s);
+            let window = SearchWindow::around(region, (pw, ph), (w, h), self.canvas.wrap);
+            let (nx, ny) = transform_size((window.width, window.height), (pw, ph), window.boundary);
+            if nx.saturating_mul(ny) > MAX_TRANSFORM_VALUES {
+                let source = &self.sources[s];
+                return Err(Error::InvalidSize {
+                    what: "exemplar",
+                    width: source.width(),
+                    height: source.height(),
+                    reason: format!(
+                        "graph-cut matching would search a {nx}x{ny} transform, more than the \
+                         {MAX_TRANSFORM_VALUES} values allowed; shrink it first (e.g. \
+                         exemplar.resized(512)) or use placement 'random'"
+                    ),
+                });
+            }
+        }
+        Ok(())
     }
 
     /// Every unused offset of every allowed source whose patch covers `region` entirely.
@@ -237,6 +275,8 @@ pub struct SearchWindow {
     pub width: usize,
     pub height: usize,
     pub boundary: Boundary,
+    /// Whether the output wraps (its offsets are reduced modulo its size).
+    pub wrap: bool,
 }
 
 impl SearchWindow {
@@ -256,14 +296,39 @@ impl SearchWindow {
                 width: w,
                 height: h,
                 boundary: Boundary::Periodic,
+                wrap,
             };
         }
+        let (x, y) = (
+            (region.x + region.width) as i64 - pw as i64,
+            (region.y + region.height) as i64 - ph as i64,
+        );
+        if wrap {
+            return SearchWindow {
+                x,
+                y,
+                width,
+                height,
+                boundary: Boundary::Open,
+                wrap,
+            };
+        }
+        // Outside a bounded output the patch's pixels count for nothing, so the window stops at
+        // the border: a patch (exemplar) much larger than the output searches no more than the
+        // output itself.
+        let clip = |start: i64, len: usize, size: usize| {
+            let first = start.max(0);
+            let last = (start + len as i64).min(size as i64).max(first + 1);
+            (first, (last - first) as usize)
+        };
+        let ((x, width), (y, height)) = (clip(x, width, w), clip(y, height, h));
         SearchWindow {
-            x: (region.x + region.width) as i64 - pw as i64,
-            y: (region.y + region.height) as i64 - ph as i64,
+            x,
+            y,
             width,
             height,
             boundary: Boundary::Open,
+            wrap,
         }
     }
 
@@ -316,10 +381,12 @@ impl SearchWindow {
             Boundary::Periodic => (tx as isize, ty as isize),
             // A wrapped offset was reduced modulo the output size; inside the window it is the
             // distance from the window's corner, which is below the output size.
-            Boundary::Open if self.width <= w && self.height <= h => (
+            Boundary::Open if self.wrap => (
                 (tx - self.x).rem_euclid(w as i64) as isize,
                 (ty - self.y).rem_euclid(h as i64) as isize,
             ),
+            // Bounded: the window may start after the patch does (negative offsets are in the
+            // map, down to 1 - patch size).
             Boundary::Open => ((tx - self.x) as isize, (ty - self.y) as isize),
         }
     }

@@ -46,7 +46,7 @@ impl Synthesis {
             .map(|&v| (f64::from(v) - mean).powi(2))
             .sum::<f64>()
             / data.len() as f64;
-        Ok(Synthesis {
+        let synthesis = Synthesis {
             rng: Rng::new(options.seed),
             sigma: (var.sqrt() as f32).max(1e-3),
             options,
@@ -56,7 +56,9 @@ impl Synthesis {
             ssd: SsdSearch::new(),
             seam_features: Vec::new(),
             seam_feature_weight: 0.0,
-        })
+        };
+        synthesis.check_search_size()?;
+        Ok(synthesis)
     }
 
     /// What patch `patch` shows at output pixel `i`, with its gradient across a horizontal edge

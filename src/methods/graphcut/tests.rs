@@ -614,3 +614,30 @@ fn the_seam_pays_for_features_the_patches_do_not_share() {
     s.seam_feature_weight = 2.0;
     assert_eq!(s.feature_at(b, 5 * 24), None);
 }
+
+/// A photo used whole as the exemplar is refused by the constructor, not by a later step, and
+/// the message says what to do; random placement, which does not search, still accepts it.
+#[test]
+fn an_exemplar_too_large_to_search_is_refused_up_front() {
+    let photo = Image::new(3000, 2000, 1).unwrap();
+    let options = |placement| Options {
+        output_width: 256,
+        output_height: 256,
+        placement,
+        ..Options::default()
+    };
+    for placement in [Placement::EntirePatch, Placement::SubPatch] {
+        let message = Synthesis::new(&photo, options(placement))
+            .err()
+            .expect("refused")
+            .to_string();
+        assert!(
+            message.contains("3000x2000") && message.contains("resized"),
+            "{message}"
+        );
+    }
+    assert!(Synthesis::new(&photo, options(Placement::Random)).is_ok());
+    // A 1024x1024 exemplar is accepted: the search window stops at the output's border.
+    let large = Image::new(1024, 1024, 1).unwrap();
+    assert!(Synthesis::new(&large, options(Placement::EntirePatch)).is_ok());
+}

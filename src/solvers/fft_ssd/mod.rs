@@ -57,6 +57,25 @@ pub const MIN_AREA: f32 = 1e-6;
 /// The largest transform, in values (`2048 x 2048`): five spectra of it already take 170 MB.
 pub const MAX_TRANSFORM_VALUES: usize = 1 << 22;
 
+/// The size of the transform a search of a `pw` x `ph` patch over a `ow` x `oh` output uses: at
+/// most [`MAX_TRANSFORM_VALUES`] values are allowed, so callers can refuse a size up front.
+#[must_use]
+pub fn transform_size(
+    (ow, oh): (usize, usize),
+    (pw, ph): (usize, usize),
+    boundary: Boundary,
+) -> (usize, usize) {
+    match boundary {
+        // Padding to at least `ow + pw - 1` keeps the circular correlation from wrapping; an even
+        // width lets the row transforms run at half length.
+        Boundary::Open => (
+            2 * smooth_size((ow + pw - 1).div_ceil(2)),
+            smooth_size(oh + ph - 1),
+        ),
+        Boundary::Periodic => (ow, oh),
+    }
+}
+
 /// The cost `C(t)` and overlap area `A(t)` of every translation `t`, row by row.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SsdMap {
@@ -223,17 +242,10 @@ impl SsdSearch {
         let patch = Weighted::new(patch, patch_weights, ("patch", "patch weights"))?;
         let (ow, oh) = (output.image.width(), output.image.height());
         let (pw, ph) = (patch.image.width(), patch.image.height());
-        let (nx, ny, map_width, map_height, first_offset) = match boundary {
-            // Padding to at least `ow + pw - 1` keeps the circular correlation from wrapping; an
-            // even width lets the row transforms run at half length.
-            Boundary::Open => (
-                2 * smooth_size((ow + pw - 1).div_ceil(2)),
-                smooth_size(oh + ph - 1),
-                ow + pw - 1,
-                oh + ph - 1,
-                (1 - pw as isize, 1 - ph as isize),
-            ),
-            Boundary::Periodic => (ow, oh, ow, oh, (0, 0)),
+        let (nx, ny) = transform_size((ow, oh), (pw, ph), boundary);
+        let (map_width, map_height, first_offset) = match boundary {
+            Boundary::Open => (ow + pw - 1, oh + ph - 1, (1 - pw as isize, 1 - ph as isize)),
+            Boundary::Periodic => (ow, oh, (0, 0)),
         };
         if nx.saturating_mul(ny) > MAX_TRANSFORM_VALUES {
             return Err(Error::InvalidSize {
