@@ -12,7 +12,9 @@ pub mod thinning;
 pub use detect::{DetectOptions, FeatureKind, FeatureMap, detect};
 pub mod broken;
 pub mod hybrid;
+mod options;
 mod session;
 
 pub use alignment::WarpKind;
-pub use session::{FeatureEvent, FeatureOptions, FeaturePlacement, FeatureSynthesis, Placement};
+pub use options::{FeatureOptions, FeaturePlacement};
+pub use session::{FeatureEvent, FeatureSynthesis, Placement};
