@@ -58,6 +58,20 @@ pub fn match_cost(
     }
 }
 
+/// Sigma of eq. 3 (`exp(-C / (k sigma^2))`): the standard deviation of the input's values, at
+/// least 1e-3 so that a flat input does not divide by zero. Images and video alike.
+#[must_use]
+pub fn value_sigma(data: &[f32]) -> f32 {
+    let n = data.len().max(1) as f64;
+    let mean = data.iter().map(|&v| f64::from(v)).sum::<f64>() / n;
+    let var = data
+        .iter()
+        .map(|&v| (f64::from(v) - mean).powi(2))
+        .sum::<f64>()
+        / n;
+    (var.sqrt() as f32).max(1e-3)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

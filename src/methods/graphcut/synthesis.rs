@@ -4,7 +4,7 @@
 use std::collections::HashSet;
 
 use super::canvas::{Canvas, Patch};
-use super::cost::{Sample, match_cost};
+use super::cost::{Sample, match_cost, value_sigma};
 use super::options::Options;
 use super::source::{Source, build_sources};
 use crate::core::{Image, Result, Rng};
@@ -39,16 +39,9 @@ impl Synthesis {
             exemplar.channels(),
             options.tileable,
         )?;
-        let data = exemplar.data();
-        let mean = data.iter().map(|&v| f64::from(v)).sum::<f64>() / data.len() as f64;
-        let var = data
-            .iter()
-            .map(|&v| (f64::from(v) - mean).powi(2))
-            .sum::<f64>()
-            / data.len() as f64;
         let synthesis = Synthesis {
             rng: Rng::new(options.seed),
-            sigma: (var.sqrt() as f32).max(1e-3),
+            sigma: value_sigma(exemplar.data()),
             options,
             sources,
             canvas,

@@ -21,6 +21,7 @@ use super::synthesis::Synthesis;
 use super::transition::{Transition, best_transition, half_window};
 use super::volume::Volume;
 use crate::core::{Result, Rng};
+use crate::methods::graphcut::cost::value_sigma;
 use crate::solvers::fft_ssd::{volume_search_bytes, volume_transform_size};
 
 /// What a step did.
@@ -78,14 +79,7 @@ impl Session {
         let input = (clip.width(), clip.height(), clip.frames());
         let size = options.output_size(input)?;
         let plane = |w: usize, h: usize| w * h;
-        let data = clip.data();
-        let mean = data.iter().map(|&v| f64::from(v)).sum::<f64>() / data.len() as f64;
-        let var = data
-            .iter()
-            .map(|&v| (f64::from(v) - mean).powi(2))
-            .sum::<f64>()
-            / data.len() as f64;
-        let sigma = (var.sqrt() as f32).max(1e-3);
+        let sigma = value_sigma(clip.data());
         let rng = Rng::new(options.seed);
         match options.mode {
             Mode::Loop => {
