@@ -1,7 +1,8 @@
 //! Native benchmark of texture optimisation: `cargo run --release --example bench [-- SEARCH...]`.
-//! Synthesises 256x256 from the 128x128 and 64x64 samples with each search and prints total time,
+//! Synthesises 256x256 (`BENCH_SIZE=1024`: 1024x1024) from the 128x128 and 64x64 samples with each search and prints total time,
 //! time per step (median, max), final energy and the search used. `scripts/bench.sh` runs this and
-//! the same cases as wasm in Node. `BENCH_WRITE=dir` also writes each output as a PNG.
+//! the same cases as wasm in Node. `BENCH_WRITE=dir` also writes each output as a PNG;
+//! `BENCH_VERBOSE=1` prints every step.
 
 use std::time::Instant;
 
@@ -20,7 +21,10 @@ fn main() {
     };
     let samples =
         std::env::var("BENCH_SAMPLES").unwrap_or_else(|_| "gravel_128,gravel_64,tiles_128".into());
-    println!("native texture optimization, 256x256 output, default schedule (r = 0.8, seed 1)");
+    let size: usize = std::env::var("BENCH_SIZE").map_or(256, |v| v.parse().expect("BENCH_SIZE"));
+    println!(
+        "native texture optimization, {size}x{size} output, default schedule (r = 0.8, seed 1)"
+    );
     println!(
         "{:<12} {:<12} {:>6} {:>9} {:>10} {:>10} {:>12}",
         "exemplar", "search", "steps", "total ms", "median ms", "max ms", "final energy"
@@ -32,6 +36,8 @@ fn main() {
         for &search in &searches {
             let options = Options {
                 search,
+                output_width: size,
+                output_height: size,
                 ..Options::default()
             };
             let start = Instant::now();
@@ -41,6 +47,17 @@ fn main() {
                 let t = Instant::now();
                 let event = session.step().expect("step");
                 steps.push(t.elapsed().as_secs_f64() * 1e3);
+                if std::env::var_os("BENCH_VERBOSE").is_some() {
+                    println!(
+                        "  level {} (octave {}, w {}) iteration {}: {:.1} ms, {} changed",
+                        event.level,
+                        event.octave,
+                        event.size,
+                        event.iteration,
+                        steps[steps.len() - 1],
+                        event.changed
+                    );
+                }
                 if event.kind == EventKind::Done {
                     break event.energy;
                 }

@@ -61,26 +61,41 @@ pub fn e_step(m: &Matches<'_>, output: &mut Image, constraint: Option<&Constrain
         for dy in 0..m.size {
             let y = if m.wrap { (oy + dy) % h } else { oy + dy };
             let zy = z.y as usize + dy;
-            for dx in 0..m.size {
-                let x = if m.wrap { (ox + dx) % w } else { ox + dx };
-                let zx = z.x as usize + dx;
-                let g = omega * m.falloff[dy * m.size + dx];
-                let (i, zi) = (y * w + x, (zy * ew + zx) * c);
-                weight[i] += g;
-                for k in 0..c {
-                    colour[i * c + k] += g * ex[zi + k];
+            let falloff = &m.falloff[dy * m.size..(dy + 1) * m.size];
+            // The row's pixels as at most two runs of contiguous output columns (the second
+            // when the neighbourhood wraps past the right border), so the inner loops run
+            // over plain slices.
+            let first = if m.wrap { m.size.min(w - ox) } else { m.size };
+            for (x0, dx0, len) in [(ox, 0, first), (0, first, m.size - first)] {
+                if len == 0 {
+                    continue;
                 }
+                let i = y * w + x0;
+                let zi = zy * ew + z.x as usize + dx0;
+                let g = &falloff[dx0..dx0 + len];
+                accumulate(
+                    c,
+                    omega,
+                    g,
+                    &ex[zi * c..(zi + len) * c],
+                    &mut weight[i..i + len],
+                    &mut colour[i * c..(i + len) * c],
+                );
                 if gradient {
                     // Forward differences of the exemplar, zero past its border (as in the
                     // feature map the M-step compares).
-                    let zr = (zy * ew + (zx + 1).min(ew - 1)) * c;
-                    let zd = ((zy + 1).min(eh - 1) * ew + zx) * c;
-                    h_weight[i] += g;
-                    v_weight[i] += g;
-                    for k in 0..c {
-                        h_diff[i * c + k] += g * (ex[zr + k] - ex[zi + k]);
-                        v_diff[i * c + k] += g * (ex[zd + k] - ex[zi + k]);
-                    }
+                    let zx = z.x as usize + dx0;
+                    let down = (zy + 1).min(eh - 1) * ew + zx;
+                    accumulate_differences(
+                        c,
+                        omega,
+                        g,
+                        &ex[(zy * ew + zx) * c..],
+                        &ex[down * c..],
+                        ew - zx,
+                        (&mut h_weight[i..i + len], &mut h_diff[i * c..(i + len) * c]),
+                        (&mut v_weight[i..i + len], &mut v_diff[i * c..(i + len) * c]),
+                    );
                 }
             }
         }
@@ -126,6 +141,66 @@ pub fn e_step(m: &Matches<'_>, output: &mut Image, constraint: Option<&Constrain
         }
     }
     iterations
+}
+
+/// Adds one row run of a matched neighbourhood: `weight += omega g` and `colour += omega g z`
+/// per pixel. Specialised per channel count so that the channel loop unrolls.
+#[inline]
+fn accumulate(c: usize, omega: f32, g: &[f32], z: &[f32], weight: &mut [f32], colour: &mut [f32]) {
+    #[inline(always)]
+    fn run<const C: usize>(
+        omega: f32,
+        g: &[f32],
+        z: &[f32],
+        weight: &mut [f32],
+        colour: &mut [f32],
+    ) {
+        for (((gk, zk), wk), ck) in g
+            .iter()
+            .zip(z.chunks_exact(C))
+            .zip(weight.iter_mut())
+            .zip(colour.chunks_exact_mut(C))
+        {
+            let gw = omega * gk;
+            *wk += gw;
+            for k in 0..C {
+                ck[k] += gw * zk[k];
+            }
+        }
+    }
+    match c {
+        1 => run::<1>(omega, g, z, weight, colour),
+        2 => run::<2>(omega, g, z, weight, colour),
+        3 => run::<3>(omega, g, z, weight, colour),
+        _ => run::<4>(omega, g, z, weight, colour),
+    }
+}
+
+/// Adds the gradient targets of one row run: `z` is the exemplar from the run's first pixel
+/// (`room` pixels to the end of its row), `below` the row beneath (clamped at the bottom);
+/// horizontal differences are zero at the exemplar's last column.
+#[allow(clippy::too_many_arguments)]
+fn accumulate_differences(
+    c: usize,
+    omega: f32,
+    g: &[f32],
+    z: &[f32],
+    below: &[f32],
+    room: usize,
+    (h_weight, h_diff): (&mut [f32], &mut [f32]),
+    (v_weight, v_diff): (&mut [f32], &mut [f32]),
+) {
+    for (j, &gj) in g.iter().enumerate() {
+        let gw = omega * gj;
+        h_weight[j] += gw;
+        v_weight[j] += gw;
+        let right = if j + 1 < room { j + 1 } else { j };
+        for k in 0..c {
+            let here = z[j * c + k];
+            h_diff[j * c + k] += gw * (z[right * c + k] - here);
+            v_diff[j * c + k] += gw * (below[j * c + k] - here);
+        }
+    }
 }
 
 /// The IRLS weight omega_p = ||x_p - z_p||^(r - 2) from a squared distance. The distance is

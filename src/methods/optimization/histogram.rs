@@ -9,6 +9,14 @@
 //! M-step sees it, and keeps the output's colour distribution the exemplar's.
 
 use crate::core::Image;
+use crate::core::sort::{keyed, payload, sort_keyed};
+
+/// Reused buffers of the ranking (one output's worth of keyed values, twice).
+#[derive(Debug, Clone, Default)]
+pub struct Scratch {
+    items: Vec<u64>,
+    spare: Vec<u64>,
+}
 
 /// Each channel's values of the exemplar, sorted: the target quantiles.
 #[derive(Debug, Clone)]
@@ -33,29 +41,32 @@ impl SortedChannels {
     /// Moves every value of `output` towards the exemplar value of the same rank, by `strength`
     /// (0 leaves it, 1 matches the histograms exactly). Pixels where `fixed` is above 0 (the
     /// soft constraints' mask: the user's colours, which need not be the exemplar's) keep their
-    /// values and are left out of the ranking. `order` is scratch space.
+    /// values and are left out of the ranking. Equal values rank in pixel order.
     pub fn match_histogram(
         &self,
         output: &mut Image,
         strength: f32,
         fixed: Option<&[f32]>,
-        order: &mut Vec<u32>,
+        scratch: &mut Scratch,
     ) {
         let c = output.channels();
         let free = |i: usize| fixed.is_none_or(|f| f[i] <= 0.0);
         let data = output.data_mut();
+        let order = &mut scratch.items;
         for (k, target) in self.channels.iter().enumerate().take(c) {
             order.clear();
-            order.extend((0..data.len() / c).filter(|&i| free(i)).map(|i| i as u32));
+            order.extend(
+                (0..data.len() / c)
+                    .filter(|&i| free(i))
+                    .map(|i| keyed(data[i * c + k], i as u32)),
+            );
             let n = order.len();
-            order.sort_unstable_by(|&a, &b| {
-                data[a as usize * c + k].total_cmp(&data[b as usize * c + k])
-            });
+            sort_keyed(order, &mut scratch.spare);
             let m = target.len();
-            for (rank, &i) in order.iter().enumerate() {
+            for (rank, &item) in order.iter().enumerate() {
                 // The exemplar value at the same quantile (centre of the rank's bin).
                 let q = ((rank as f64 + 0.5) * m as f64 / n as f64) as usize;
-                let v = &mut data[i as usize * c + k];
+                let v = &mut data[payload(item) as usize * c + k];
                 *v += strength * (target[q.min(m - 1)] - *v);
             }
         }
@@ -73,7 +84,7 @@ mod tests {
         let mut out =
             Image::from_fn(32, 16, 3, |x, y, k| 0.4 + 0.001 * (x + 40 * y + k) as f32).unwrap();
         let before = out.clone();
-        SortedChannels::new(&ex).match_histogram(&mut out, 1.0, None, &mut Vec::new());
+        SortedChannels::new(&ex).match_histogram(&mut out, 1.0, None, &mut Scratch::default());
         for k in 0..3 {
             let mut a: Vec<f32> = ex.data().iter().skip(k).step_by(3).copied().collect();
             let mut b: Vec<f32> = out.data().iter().skip(k).step_by(3).copied().collect();
@@ -88,13 +99,18 @@ mod tests {
         let (p, q) = (before.pixel(3, 2)[0], before.pixel(9, 5)[0]);
         assert!(p < q && out.pixel(3, 2)[0] <= out.pixel(9, 5)[0]);
         let mut same = before.clone();
-        SortedChannels::new(&ex).match_histogram(&mut same, 0.0, None, &mut Vec::new());
+        SortedChannels::new(&ex).match_histogram(&mut same, 0.0, None, &mut Scratch::default());
         assert_eq!(same, before);
         // Fixed pixels keep their values.
         let mut fixed = vec![0.0; 32 * 16];
         fixed[5] = 1.0;
         let mut partly = before.clone();
-        SortedChannels::new(&ex).match_histogram(&mut partly, 1.0, Some(&fixed), &mut Vec::new());
+        SortedChannels::new(&ex).match_histogram(
+            &mut partly,
+            1.0,
+            Some(&fixed),
+            &mut Scratch::default(),
+        );
         assert_eq!(partly.pixel(5, 0), before.pixel(5, 0));
         assert_ne!(partly.pixel(6, 0), before.pixel(6, 0));
     }

@@ -5,10 +5,11 @@
 
 use super::constraints::Constraint;
 use super::e_step::{Matches, e_step, robust_weight};
-use super::features::{feature_map, gather};
-use super::histogram::SortedChannels;
+use super::features::feature_map;
+use super::histogram::{Scratch, SortedChannels};
 use super::m_step::Matcher;
 use super::occurrence::{Occurrence, strength};
+use super::queries::GridQueries;
 use super::schedule::{grid_axis, nearest_corner};
 use super::wavelet_energy::{Energy, WaveletEnergy};
 use crate::core::sample::resize_bilinear;
@@ -16,7 +17,7 @@ use crate::core::{Edge, Image, Result, Rng};
 use crate::methods::optimization::e_step::edge;
 use crate::solvers::nn::patches::gaussian_falloff;
 use crate::solvers::nn::patchmatch::QueryGrid;
-use crate::solvers::nn::{Neighbourhoods, Objective, Pos, Search};
+use crate::solvers::nn::{Neighbourhoods, Objective, Pos, Queries, Query, Search};
 
 /// The fixed settings of a level.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -74,26 +75,18 @@ pub struct LevelSolver {
     /// The pixel term alone with a wavelet energy (empty otherwise): the reported energy, so
     /// that energies compare.
     pixel_distances: Vec<f32>,
-    /// The wavelet transform of the neighbourhoods with a wavelet energy, its scratch space
-    /// (one gathered neighbourhood, one block side) and unit weights (the pixel term of
-    /// transformed vectors, by Parseval).
+    /// The wavelet transform of the neighbourhoods with a wavelet energy, and unit weights
+    /// (the pixel term of transformed vectors, by Parseval).
     wavelet: Option<WaveletEnergy>,
-    gathered: Vec<f32>,
-    wavelet_scratch: Vec<f32>,
     unit_weights: Vec<f32>,
     /// The M-step's own objective per node (equal to `distances` without constraints).
     objective: Vec<f32>,
     falloff: Vec<f32>,
-    /// The gathered output neighbourhoods x_p, one vector per node.
-    queries: Vec<f32>,
-    /// Constrained queries and their weights (empty until a constraint is used).
-    constrained: Vec<f32>,
-    constrained_weights: Vec<f32>,
     /// The exemplar coverage the last occurrence penalty used (empty before).
     coverage: Vec<f64>,
     /// This level's exemplar values sorted, for histogram matching, and its scratch space.
     histogram: SortedChannels,
-    order: Vec<u32>,
+    order: Scratch,
 }
 
 impl LevelSolver {
@@ -131,15 +124,9 @@ impl LevelSolver {
         let len = matcher.space().vector_len();
         LevelSolver {
             falloff: gaussian_falloff(setup.size, 1),
-            queries: vec![0.0; nodes * len],
             distances: vec![f32::INFINITY; nodes],
             pixel_distances: if wavelet.is_some() {
                 vec![f32::INFINITY; nodes]
-            } else {
-                Vec::new()
-            },
-            gathered: if wavelet.is_some() {
-                vec![0.0; len]
             } else {
                 Vec::new()
             },
@@ -149,13 +136,10 @@ impl LevelSolver {
                 Vec::new()
             },
             wavelet,
-            wavelet_scratch,
             objective: vec![f32::INFINITY; nodes],
-            constrained: Vec::new(),
-            constrained_weights: Vec::new(),
             coverage: Vec::new(),
             histogram: SortedChannels::new(exemplar),
-            order: Vec::new(),
+            order: Scratch::default(),
             setup,
             matcher,
             cols,
@@ -254,18 +238,6 @@ impl LevelSolver {
         let LevelSetup { mu, wrap, size, .. } = self.setup;
         let map = feature_map(output, mu, edge(wrap));
         let space = self.matcher.space();
-        let len = space.vector_len();
-        let nx = self.cols.len();
-        for (n, query) in self.queries.chunks_exact_mut(len).enumerate() {
-            let (x, y) = (self.cols[n % nx], self.rows[n / nx]);
-            match &self.wavelet {
-                None => gather(&map, x, y, size, wrap, query),
-                Some(e) => {
-                    gather(&map, x, y, size, wrap, &mut self.gathered);
-                    e.transform(&self.gathered, query, &mut self.wavelet_scratch);
-                }
-            }
-        }
         let grid = QueryGrid {
             cols: &self.cols,
             rows: &self.rows,
@@ -276,48 +248,27 @@ impl LevelSolver {
             self.coverage.extend_from_slice(o.coverage());
         }
         let penalty = occurrence.as_ref().map(|o| move |z: Pos| o.penalty(z));
-        let mut objective = Objective {
-            weights: None,
+        let objective = Objective {
             penalty: penalty.as_ref().map(|f| f as &dyn Fn(Pos) -> f32),
         };
-        let mut queries = &self.queries;
         debug_assert!(
             constraint.is_none() || self.wavelet.is_none(),
             "the session refuses constraints with a wavelet energy"
         );
-        if let Some(constraint) = constraint.filter(|_| self.wavelet.is_none()) {
-            self.constrained.clone_from(&self.queries);
-            self.constrained_weights.clear();
-            for _ in 0..self.matches.len() {
-                self.constrained_weights.extend_from_slice(space.weights());
-            }
-            for (n, (query, weights)) in self
-                .constrained
-                .chunks_exact_mut(len)
-                .zip(self.constrained_weights.chunks_exact_mut(len))
-                .enumerate()
-            {
-                constraint.apply_to_query(
-                    self.cols[n % nx],
-                    self.rows[n / nx],
-                    size,
-                    map.dims,
-                    wrap,
-                    query,
-                    weights,
-                );
-            }
-            queries = &self.constrained;
-            objective.weights = Some(&self.constrained_weights);
-        }
+        let constraint = constraint.filter(|_| self.wavelet.is_none());
+        let plain = || {
+            GridQueries::new(&map, (&self.cols, &self.rows), size, wrap)
+                .transformed(self.wavelet.as_ref())
+        };
         let changed = self.matcher.m_step(
-            queries,
+            &mut plain().constrained(constraint, space.weights()),
             &objective,
             grid,
             &mut self.matches,
             &mut self.objective,
             rng,
         );
+        let mut query = Query::new(space.vector_len());
         if constraint.is_none() {
             // Costs are distance + penalty of the match (accepted candidates have full sums).
             for ((d, &cost), &m) in self
@@ -330,20 +281,20 @@ impl LevelSolver {
             }
         } else {
             // The IRLS weights and the reported energy are about the texture term alone.
+            let mut queries = plain();
             for (n, d) in self.distances.iter_mut().enumerate() {
-                *d = space.distance(
-                    &self.queries[n * len..(n + 1) * len],
-                    self.matches[n],
-                    f32::INFINITY,
-                );
+                queries.fill(n, &mut query);
+                *d = query.distance(space, self.matches[n], f32::INFINITY);
             }
         }
         if self.wavelet.is_some() {
             // Parseval: the unweighted distance of transformed (windowed) vectors is the
             // fall-off weighted pixel distance.
+            let mut queries = plain();
             for (n, d) in self.pixel_distances.iter_mut().enumerate() {
+                queries.fill(n, &mut query);
                 *d = space.distance_with(
-                    &self.queries[n * len..(n + 1) * len],
+                    &query.values,
                     &self.unit_weights,
                     self.matches[n],
                     f32::INFINITY,

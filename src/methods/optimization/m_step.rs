@@ -5,7 +5,9 @@
 use crate::core::Rng;
 use crate::solvers::nn::kmeans_tree::KMeansTree;
 use crate::solvers::nn::patchmatch::{self, QueryGrid};
-use crate::solvers::nn::{FeatureMap, Neighbourhoods, Objective, Pos, Search, exact};
+use crate::solvers::nn::{
+    FeatureMap, Neighbourhoods, Objective, Pos, Queries, Query, Search, exact,
+};
 
 /// PatchMatch sweeps per M-step (forward, backward, forward). The EM loop calls it again every
 /// iteration, warm-started. Measured on the samples (128 -> 256, `cargo run --release --example
@@ -53,28 +55,19 @@ impl Matcher {
         &self.space
     }
 
-    /// Recomputes `costs` for the current `matches` (the queries changed in the E-step), then
-    /// improves the matches under `objective` (the plain distance, or with soft-constraint
-    /// weights and an occurrence penalty). Returns how many matches changed.
+    /// Improves the matches under `objective` (the plain distance, or with an occurrence
+    /// penalty), for queries made one node at a time (with soft-constraint weights when they
+    /// carry them), and leaves each match's cost in `costs` (recomputed first: the queries
+    /// changed in the E-step). Returns how many matches changed.
     pub fn m_step(
         &self,
-        queries: &[f32],
+        queries: &mut dyn Queries,
         objective: &Objective<'_>,
         grid: QueryGrid<'_>,
         matches: &mut [Pos],
         costs: &mut [f32],
         rng: &mut Rng,
     ) -> usize {
-        let len = self.space.vector_len();
-        for (n, (m, d)) in matches.iter().zip(costs.iter_mut()).enumerate() {
-            *d = objective.cost(
-                &self.space,
-                n,
-                &queries[n * len..(n + 1) * len],
-                *m,
-                f32::INFINITY,
-            );
-        }
         match self.search {
             Search::PatchMatch => patchmatch::improve(
                 &self.space,
@@ -88,17 +81,19 @@ impl Matcher {
             ),
             Search::Exact | Search::KMeansTree => {
                 let mut changed = 0;
+                let mut query = Query::new(self.space.vector_len());
                 for (n, (m, d)) in matches.iter_mut().zip(costs.iter_mut()).enumerate() {
-                    let query = &queries[n * len..(n + 1) * len];
+                    queries.fill(n, &mut query);
+                    *d = objective.cost(&self.space, &query, *m, f32::INFINITY);
                     let (pos, cost) = match &self.tree {
                         // The tree is built for the fall-off weights: it proposes a candidate
                         // for the query, which is then scored under the objective, so a match
                         // still only changes to a better one.
                         Some(tree) => {
-                            let pos = tree.nearest(&self.space, query).0;
-                            (pos, objective.cost(&self.space, n, query, pos, *d))
+                            let pos = tree.nearest(&self.space, &query.values).0;
+                            (pos, objective.cost(&self.space, &query, pos, *d))
                         }
-                        None => exact::nearest_by(&self.space, objective, n, query),
+                        None => exact::nearest_by(&self.space, objective, &query),
                     };
                     if cost < *d {
                         changed += usize::from(pos != *m);

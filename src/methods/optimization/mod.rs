@@ -12,6 +12,7 @@ pub mod level;
 pub mod m_step;
 pub mod occurrence;
 pub mod options;
+pub mod queries;
 pub mod schedule;
 pub mod session;
 pub mod teaching;

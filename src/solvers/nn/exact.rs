@@ -1,28 +1,23 @@
 //! Exact nearest neighbourhood by brute force: every exemplar neighbourhood is compared. The
 //! oracle for the faster searches, and fine for small exemplars.
 
-use super::Objective;
 use super::patches::{Neighbourhoods, Pos};
+use super::{Objective, Query};
 
 /// The nearest neighbourhood to `query` and its distance. Ties go to the first in scan order, so
 /// the answer is deterministic. The running best is the early-exit bound of every comparison.
 #[must_use]
 pub fn nearest(space: &Neighbourhoods, query: &[f32]) -> (Pos, f32) {
-    nearest_by(space, &Objective::default(), 0, query)
+    nearest_by(space, &Objective::default(), &Query::of(query))
 }
 
-/// The candidate of least `objective` cost for query `n`.
+/// The candidate of least `objective` cost for `query`.
 #[must_use]
-pub fn nearest_by(
-    space: &Neighbourhoods,
-    objective: &Objective<'_>,
-    n: usize,
-    query: &[f32],
-) -> (Pos, f32) {
+pub fn nearest_by(space: &Neighbourhoods, objective: &Objective<'_>, query: &Query) -> (Pos, f32) {
     let mut best = (Pos::default(), f32::INFINITY);
     for i in 0..space.count() {
         let pos = space.pos_of(i);
-        let d = objective.cost(space, n, query, pos, best.1);
+        let d = objective.cost(space, query, pos, best.1);
         if d < best.1 {
             best = (pos, d);
         }

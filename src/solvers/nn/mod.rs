@@ -8,39 +8,112 @@ pub mod patchmatch;
 
 pub use patches::{FeatureMap, Neighbourhoods, Pos};
 
-/// What a search minimises for query `n`: the weighted distance (under the query's own weights
-/// when given, e.g. soft constraints) plus a penalty on the candidate (e.g. for exemplar
-/// neighbourhoods already used too often). The default is the plain distance.
+/// One query being searched for: its values and, when it carries weights of its own (soft
+/// constraints weigh constrained pixels more, Kwatra et al. 2005 section 4), those; otherwise
+/// the space's fall-off applies.
+#[derive(Debug, Clone, Default)]
+pub struct Query {
+    pub values: Vec<f32>,
+    pub weights: Vec<f32>,
+    pub own_weights: bool,
+}
+
+impl Query {
+    /// A zeroed query of `len` values under the space's weights.
+    #[must_use]
+    pub fn new(len: usize) -> Self {
+        Query {
+            values: vec![0.0; len],
+            weights: vec![0.0; len],
+            own_weights: false,
+        }
+    }
+
+    /// A query of the given values under the space's weights.
+    #[must_use]
+    pub fn of(values: &[f32]) -> Self {
+        Query {
+            values: values.to_vec(),
+            weights: Vec::new(),
+            own_weights: false,
+        }
+    }
+
+    /// The weights its distances use.
+    #[inline]
+    #[must_use]
+    pub fn weights<'a>(&'a self, space: &'a Neighbourhoods) -> &'a [f32] {
+        if self.own_weights {
+            &self.weights
+        } else {
+            space.weights()
+        }
+    }
+
+    /// Its distance to the neighbourhood at `pos` (see [`Neighbourhoods::distance_with`]).
+    #[inline]
+    #[must_use]
+    pub fn distance(&self, space: &Neighbourhoods, pos: Pos, bound: f32) -> f32 {
+        space.distance_with(&self.values, self.weights(space), pos, bound)
+    }
+}
+
+/// The queries of an M-step, one per grid node, made on demand: a 1024x1024 output has 15,625
+/// neighbourhoods of 32x32 at spacing 8, 190 MB of RGB queries if stored, and a 4096x4096 one
+/// sixteen times that; made one at a time they take one vector.
+pub trait Queries {
+    /// How many there are.
+    fn count(&self) -> usize;
+    /// Writes query `n` into `query` (its values, and its weights when it has its own).
+    fn fill(&mut self, n: usize, query: &mut Query);
+}
+
+/// Queries stored one after another, `len` values each, with optional per-value weights laid
+/// out the same way.
+#[derive(Debug, Clone, Copy)]
+pub struct Stored<'a> {
+    pub values: &'a [f32],
+    pub weights: Option<&'a [f32]>,
+    pub len: usize,
+}
+
+impl Queries for Stored<'_> {
+    fn count(&self) -> usize {
+        self.values.len() / self.len
+    }
+
+    fn fill(&mut self, n: usize, query: &mut Query) {
+        let range = n * self.len..(n + 1) * self.len;
+        query.values.clear();
+        query.values.extend_from_slice(&self.values[range.clone()]);
+        query.own_weights = self.weights.is_some();
+        if let Some(w) = self.weights {
+            query.weights.clear();
+            query.weights.extend_from_slice(&w[range]);
+        }
+    }
+}
+
+/// What a search minimises: the weighted distance of the query plus a penalty on the candidate
+/// (e.g. for exemplar neighbourhoods already used too often). The default is the plain
+/// distance.
 #[derive(Clone, Copy, Default)]
 pub struct Objective<'a> {
-    /// Per-value weights for every query, laid out like the queries.
-    pub weights: Option<&'a [f32]>,
     /// A cost added for a candidate, whatever the query.
     pub penalty: Option<&'a dyn Fn(Pos) -> f32>,
 }
 
 impl Objective<'_> {
-    /// The cost of `pos` for query `n`; stops early (returning a value above `bound`) as soon
-    /// as it exceeds `bound`.
+    /// The cost of `pos` for `query`; stops early (returning a value above `bound`) as soon as
+    /// it exceeds `bound`.
     #[inline]
     #[must_use]
-    pub fn cost(
-        &self,
-        space: &Neighbourhoods,
-        n: usize,
-        query: &[f32],
-        pos: Pos,
-        bound: f32,
-    ) -> f32 {
+    pub fn cost(&self, space: &Neighbourhoods, query: &Query, pos: Pos, bound: f32) -> f32 {
         let extra = self.penalty.map_or(0.0, |f| f(pos));
         if extra > bound {
             return extra;
         }
-        let len = space.vector_len();
-        let weights = self
-            .weights
-            .map_or(space.weights(), |w| &w[n * len..(n + 1) * len]);
-        extra + space.distance_with(query, weights, pos, bound - extra)
+        extra + query.distance(space, pos, bound - extra)
     }
 }
 

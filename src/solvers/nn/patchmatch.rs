@@ -3,8 +3,8 @@
 //! around its own match at halving radii (random search). Warm-started from the previous
 //! iteration's matches, so the EM iterations double as PatchMatch iterations.
 
-use super::Objective;
 use super::patches::{Neighbourhoods, Pos};
+use super::{Objective, Queries, Query};
 use crate::core::Rng;
 
 /// The layout of the query grid: column and row positions (in output pixels) of the nodes. Nodes
@@ -15,14 +15,15 @@ pub struct QueryGrid<'a> {
     pub rows: &'a [usize],
 }
 
-/// Improves `matches` (and their `distances`, which must be current) in place by `passes`
-/// alternating forward/backward sweeps. A match only ever changes to a strictly closer one, so
-/// the cost cannot rise. Costs are those of `objective` (the plain distance by default); the
-/// `distances` are in its terms. Returns how many nodes changed.
+/// Improves `matches` in place by `passes` alternating forward/backward sweeps and leaves their
+/// costs in `distances` (the first sweep computes each node's cost for its current match when
+/// it gets there: the queries changed since the last M-step). A match only ever changes to a
+/// strictly closer one, so the cost cannot rise. Costs are those of `objective` (the plain
+/// distance by default). Queries are made one node at a time. Returns how many nodes changed.
 #[allow(clippy::too_many_arguments)]
 pub fn improve(
     space: &Neighbourhoods,
-    queries: &[f32],
+    queries: &mut dyn Queries,
     objective: &Objective<'_>,
     grid: QueryGrid<'_>,
     matches: &mut [Pos],
@@ -31,21 +32,25 @@ pub fn improve(
     rng: &mut Rng,
 ) -> usize {
     let (nx, ny) = (grid.cols.len(), grid.rows.len());
-    let len = space.vector_len();
     let (ex, ey) = space.extent();
     let max_radius = ex.max(ey) as i64;
     let mut changed = vec![false; matches.len()];
+    let mut query = Query::new(space.vector_len());
     for pass in 0..passes {
         let forward = pass % 2 == 0;
         let step: isize = if forward { 1 } else { -1 };
         for k in 0..nx * ny {
             let i = if forward { k } else { nx * ny - 1 - k };
             let (gx, gy) = (i % nx, i / nx);
-            let query = &queries[i * len..(i + 1) * len];
+            queries.fill(i, &mut query);
+            if pass == 0 {
+                distances[i] = objective.cost(space, &query, matches[i], f32::INFINITY);
+            }
+            let query = &query;
             let mut best = (matches[i], distances[i]);
             let consider = |candidate: Pos, best: &mut (Pos, f32)| {
                 if candidate != best.0 {
-                    let d = objective.cost(space, i, query, candidate, best.1);
+                    let d = objective.cost(space, query, candidate, best.1);
                     if d < best.1 {
                         *best = (candidate, d);
                     }
@@ -95,8 +100,8 @@ pub fn improve(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::solvers::nn::exact;
     use crate::solvers::nn::patches::FeatureMap;
+    use crate::solvers::nn::{Stored, exact};
 
     /// A smooth but non-repeating exemplar, so that nearest neighbourhoods are well defined.
     fn exemplar(width: usize, height: usize) -> FeatureMap {
@@ -153,7 +158,11 @@ mod tests {
         for _ in 0..6 {
             improve(
                 &space,
-                &queries,
+                &mut Stored {
+                    values: &queries,
+                    weights: None,
+                    len,
+                },
                 &Objective::default(),
                 grid,
                 &mut matches,
@@ -198,7 +207,11 @@ mod tests {
         for _ in 0..8 {
             improve(
                 &space,
-                &queries,
+                &mut Stored {
+                    values: &queries,
+                    weights: None,
+                    len,
+                },
                 &Objective::default(),
                 grid,
                 &mut matches,
