@@ -98,6 +98,7 @@ function setExemplar(exemplar, label) {
   const kind = { 1: 'grey', 2: 'grey + alpha', 3: 'RGB', 4: 'RGBA' }[exemplar.channels];
   $('exemplar-info').textContent = `${label}: ${exemplar.width}×${exemplar.height}, ${kind}`;
   document.body.dataset.exemplar = label;
+  document.body.dataset.exemplarSize = `${exemplar.width}x${exemplar.height}`;
   setStatus('ready');
 }
 
@@ -132,6 +133,8 @@ async function main() {
     samplesEl: $('samples'),
     uploadEl: $('upload'),
     dropEl: $('drop'),
+    workingSizeEl: $('working-size'),
+    dialogEl: $('large-upload'),
     onExemplar: setExemplar,
     onError: showError,
   });

@@ -1,13 +1,16 @@
 // The exemplar input: built-in samples, file upload and drag-and-drop. Everything is decoded by
 // wasm (`Exemplar.fromBytes`), so a file the library cannot read shows the library's own message.
+// An upload above the working size goes through the large-upload prompt first.
 import { Exemplar } from '../pkg/texsynth.js';
+import { setupLargeUpload } from './large-upload.js';
 import { SAMPLES } from './samples.js';
 
 /**
  * Wires the input panel. `onExemplar(exemplar, label)` is called with each new exemplar;
  * `onError(message)` with the message of anything that failed to load.
  */
-export function setupInput({ samplesEl, uploadEl, dropEl, onExemplar, onError }) {
+export function setupInput({ samplesEl, uploadEl, dropEl, workingSizeEl, dialogEl, onExemplar, onError }) {
+  const large = setupLargeUpload({ dialogEl, workingSizeEl });
   const buttons = new Map();
   for (const sample of SAMPLES) {
     const button = document.createElement('button');
@@ -34,8 +37,11 @@ export function setupInput({ samplesEl, uploadEl, dropEl, onExemplar, onError })
   async function loadBytes(bytes, label, id = null) {
     try {
       const exemplar = Exemplar.fromBytes(bytes);
+      // The samples are 64 and 128 pixels: only uploads are checked against the working size.
+      const chosen = id === null ? await large.check(exemplar, label) : { exemplar, label };
+      if (!chosen) return; // cancelled: the previous exemplar stays
       select(id);
-      onExemplar(exemplar, label);
+      onExemplar(chosen.exemplar, chosen.label);
     } catch (error) {
       onError(`${label}: ${error.message ?? error}`);
     }

@@ -1,0 +1,228 @@
+// The large-upload prompt (www/lib/large-upload.js): an upload above the working size asks first
+// (shrink, crop a square, use it whole, or cancel); a small upload and the samples do not.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { openDemo, RESULTS } from './harness.mjs';
+
+let demo;
+let bigPng;
+let smallPng;
+
+before(async () => {
+  demo = await openDemo();
+  const { page } = demo;
+  // A 1200x900 photo stand-in made by the browser's own PNG encoder: smooth gradients (so the
+  // file stays small) under a grid of discs whose colours vary, so regions differ from one another.
+  const base64 = await page.evaluate(async () => {
+    const canvas = new OffscreenCanvas(1200, 900);
+    const ctx = canvas.getContext('2d');
+    const gradient = ctx.createLinearGradient(0, 0, 1200, 900);
+    gradient.addColorStop(0, '#2a6f97');
+    gradient.addColorStop(1, '#e9c46a');
+    ctx.fillStyle = gradient;
+    ctx.fillRect(0, 0, 1200, 900);
+    for (let y = 0; y < 900; y += 50) {
+      for (let x = 0; x < 1200; x += 50) {
+        ctx.fillStyle = `hsl(${(x * 7 + y * 3) % 360} 60% 45%)`;
+        ctx.beginPath();
+        ctx.arc(x + 25, y + 25, 10 + ((x + y) % 13), 0, 2 * Math.PI);
+        ctx.fill();
+      }
+    }
+    const blob = await canvas.convertToBlob({ type: 'image/png' });
+    const bytes = new Uint8Array(await blob.arrayBuffer());
+    let text = '';
+    for (const b of bytes) text += String.fromCharCode(b);
+    return btoa(text);
+  });
+  bigPng = Buffer.from(base64, 'base64');
+  smallPng = Buffer.from(await page.evaluate(async () =>
+    Array.from(new Uint8Array(await (await fetch('./samples/tiles_64.png')).arrayBuffer()))));
+});
+after(async () => demo?.close());
+
+const upload = (page, name, buffer) => page.setInputFiles('#upload', { name, mimeType: 'image/png', buffer });
+const exemplarSize = (page) => page.evaluate(() => document.body.dataset.exemplarSize);
+const exemplarLabel = (page) => page.evaluate(() => document.body.dataset.exemplar);
+const dialogOpen = (page) => page.evaluate(() => document.getElementById('large-upload').open);
+// The visible button of that choice (Cancel is in both views).
+const choice = (name) => `#large-upload button[data-choice="${name}"]:visible`;
+
+async function uploadBig(page, name = 'big.png') {
+  await upload(page, name, bigPng);
+  await page.waitForSelector('#large-upload[open]');
+}
+
+test('a large upload asks first, naming its size; Shrink gives the working size', async () => {
+  const { page, errors } = demo;
+  assert.equal(await page.inputValue('#working-size'), '512');
+  await uploadBig(page);
+  const message = await page.textContent('#large-upload-message');
+  assert.match(message, /big\.png is 1200×900; the working size is 512\./);
+  assert.match(message, /graph cut/);
+  // The previous exemplar stays until a choice is made; the first choice has the focus.
+  assert.equal(await exemplarLabel(page), 'tiles 128×128');
+  assert.equal(await page.evaluate(() => document.activeElement.dataset.choice), 'shrink');
+  assert.equal(await page.textContent(choice('shrink')), 'Shrink to 512 (512×384)');
+  await page.screenshot({ path: `${RESULTS}/large-upload-prompt.png` });
+  await page.click(choice('shrink'));
+  await page.waitForSelector('body[data-exemplar="big.png, shrunk"]');
+  assert.equal(await exemplarSize(page), '512x384');
+  assert.equal(await dialogOpen(page), false);
+  assert.match(await page.textContent('#exemplar-info'), /512×384/);
+  assert.deepEqual(errors, []);
+});
+
+test('Escape keeps the previous exemplar', async () => {
+  const { page, errors } = demo;
+  await uploadBig(page, 'other.png');
+  await page.keyboard.press('Escape');
+  await page.waitForFunction(() => !document.getElementById('large-upload').open);
+  assert.equal(await exemplarLabel(page), 'big.png, shrunk');
+  assert.equal(await exemplarSize(page), '512x384');
+  // Cancel in the crop view does the same.
+  await uploadBig(page, 'other.png');
+  await page.click(choice('crop'));
+  await page.click(choice('cancel'));
+  assert.equal(await dialogOpen(page), false);
+  assert.equal(await exemplarLabel(page), 'big.png, shrunk');
+  assert.deepEqual(errors, []);
+});
+
+test('a keyboard-driven crop gives the chosen square, with the photo\'s own pixels', async () => {
+  const { page, errors } = demo;
+  await uploadBig(page);
+  await page.click(choice('crop'));
+  await page.waitForSelector('#large-upload [data-part="crop-view"]:not([hidden])');
+  assert.equal(await page.evaluate(() => document.activeElement.dataset.part), 'crop-canvas');
+  assert.equal(await page.isVisible('#large-upload [data-choice="shrink"]'), false, 'the choices give way to the crop view');
+  // The default square: min(working size, shorter side), centred.
+  assert.match(await page.textContent('#large-upload-crop-readout'), /^Square 512×512 px at \(344, 194\) of 1200×900$/);
+  await page.screenshot({ path: `${RESULTS}/large-upload-crop.png` });
+  // - shrinks by 32 (a 900-pixel side's step) around the centre; an arrow moves by 12 (1% of 1200).
+  for (const key of ['-', '-', 'ArrowRight', 'ArrowRight', 'ArrowDown']) await page.keyboard.press(key);
+  assert.match(await page.textContent('#large-upload-crop-readout'), /^Square 448×448 px at \(400, 238\)/);
+  await page.keyboard.press('Enter');
+  await page.waitForSelector('body[data-exemplar="big.png, crop 448×448 at (400, 238)"]');
+  assert.equal(await exemplarSize(page), '448x448');
+  // Oracle: the browser's PNG decoder, the same square cut out of the upload.
+  const max = await page.evaluate(async ({ base64, x, y, side }) => {
+    const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
+    const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
+    const ref = new OffscreenCanvas(side, side);
+    ref.getContext('2d').drawImage(bitmap, -x, -y);
+    const want = ref.getContext('2d').getImageData(0, 0, side, side).data;
+    const shown = document.getElementById('exemplar-canvas');
+    const got = shown.getContext('2d').getImageData(0, 0, shown.width, shown.height).data;
+    let max = 0;
+    for (let i = 0; i < want.length; i++) max = Math.max(max, Math.abs(want[i] - got[i]));
+    return max;
+  }, { base64: bigPng.toString('base64'), x: 400, y: 238, side: 448 });
+  assert.ok(max <= 1, `largest channel difference ${max}`);
+  // The page goes on working with it: one optimization step.
+  await page.click('#step');
+  await page.waitForFunction(() => Number(document.body.dataset.iterations) > 0, null, { timeout: 120_000 });
+  assert.deepEqual(errors, []);
+});
+
+test('the pointer moves and draws the square; a crop above the working size is shrunk to it', async () => {
+  const { page, errors } = demo;
+  await page.selectOption('#working-size', '256');
+  await uploadBig(page);
+  assert.match(await page.textContent('#large-upload-message'), /the working size is 256\./);
+  await page.click(choice('crop'));
+  const crop = () => page.evaluate(() => document.getElementById('large-upload').dataset.crop.split(',').map(Number));
+  assert.deepEqual(await crop(), [472, 322, 256]);
+  const box = await page.locator('#large-upload [data-part="crop-canvas"]').boundingBox();
+  const scale = 1200 / box.width;
+  // Drag from the square's centre 60 CSS pixels right: the square follows.
+  const cx = box.x + 600 / scale;
+  const cy = box.y + 450 / scale;
+  await page.mouse.move(cx, cy);
+  await page.mouse.down();
+  await page.mouse.move(cx + 30, cy, { steps: 3 });
+  await page.mouse.move(cx + 60, cy, { steps: 3 });
+  await page.mouse.up();
+  const [x1, y1] = await crop();
+  assert.ok(Math.abs(x1 - (472 + 60 * scale)) <= 2, `moved to ${x1}`);
+  assert.equal(y1, 322);
+  // Drag outside the square from near the top-left corner: a new square from that corner.
+  const from = { x: box.x + 20 / scale, y: box.y + 30 / scale };
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  await page.mouse.move(from.x + 200 / scale, from.y + 150 / scale, { steps: 4 });
+  await page.mouse.move(from.x + 400 / scale, from.y + 300 / scale, { steps: 4 });
+  await page.mouse.up();
+  const [x2, y2, side2] = await crop();
+  assert.ok(Math.abs(x2 - 20) <= 2 && Math.abs(y2 - 30) <= 2, `drawn at ${x2}, ${y2}`);
+  assert.ok(Math.abs(side2 - 400) <= 3, `drawn side ${side2}`);
+  // Keyboard again from here: + grows it by 32 around its centre.
+  await page.focus('#large-upload [data-part="crop-canvas"]');
+  await page.keyboard.press('+');
+  assert.equal((await crop())[2], side2 + 32);
+  assert.match(await page.textContent('#large-upload-crop-readout'), /shrunk to 256×256 on use/);
+  await page.click(choice('accept'));
+  await page.waitForFunction(() => document.body.dataset.exemplar.includes(', crop '));
+  assert.equal(await exemplarSize(page), '256x256');
+  assert.match(await exemplarLabel(page), new RegExp(`crop ${side2 + 32}×${side2 + 32} at`));
+  assert.deepEqual(errors, []);
+});
+
+test('Use it whole keeps 1200x900; a small upload and a sample show no prompt', async () => {
+  const { page, errors } = demo;
+  await page.selectOption('#working-size', '512');
+  await uploadBig(page, 'whole.png');
+  await page.click(choice('whole'));
+  await page.waitForSelector('body[data-exemplar="whole.png"]');
+  assert.equal(await exemplarSize(page), '1200x900');
+  await upload(page, 'small.png', smallPng);
+  await page.waitForSelector('body[data-exemplar="small.png"]');
+  assert.equal(await dialogOpen(page), false);
+  assert.equal(await exemplarSize(page), '64x64');
+  // 1024: the same 1200x900 upload is still above it.
+  await page.selectOption('#working-size', '1024');
+  await uploadBig(page, 'again.png');
+  assert.match(await page.textContent(choice('shrink')), /Shrink to 1024 \(1024×768\)/);
+  await page.click(choice('cancel'));
+  assert.equal(await exemplarLabel(page), 'small.png');
+  await page.click('button[data-sample="brick_128"]');
+  await page.waitForSelector('body[data-exemplar="brick 128×128"]');
+  assert.equal(await dialogOpen(page), false);
+  await page.selectOption('#working-size', '512');
+  assert.deepEqual(errors, []);
+});
+
+test('a corrupt upload still shows the library\'s message', async () => {
+  const { page } = demo;
+  await upload(page, 'broken.png', Buffer.concat([bigPng.subarray(0, 8), Buffer.from('truncated')]));
+  await page.waitForSelector('#error:not([hidden])');
+  assert.match(await page.textContent('#error'), /broken\.png: could not decode the image/);
+  assert.equal(await dialogOpen(page), false);
+  assert.equal(await exemplarLabel(page), 'brick 128×128');
+});
+
+test('on a phone-sized screen the prompt and the crop view fit', async () => {
+  const { page, errors } = demo;
+  await page.setViewportSize({ width: 390, height: 844 });
+  await uploadBig(page, 'phone.png');
+  const fits = async (selector) => {
+    const box = await page.locator(selector).boundingBox();
+    assert.ok(box.x >= 0 && box.x + box.width <= 390 && box.y >= 0 && box.y + box.height <= 844,
+      `${selector} at ${JSON.stringify(box)}`);
+  };
+  await fits('#large-upload');
+  for (const name of ['shrink', 'crop', 'whole', 'cancel']) await fits(choice(name));
+  await page.screenshot({ path: `${RESULTS}/large-upload-prompt-phone.png` });
+  await page.click(choice('crop'));
+  await fits('#large-upload');
+  await fits('#large-upload [data-part="crop-canvas"]');
+  await fits(choice('accept'));
+  await page.screenshot({ path: `${RESULTS}/large-upload-crop-phone.png` });
+  // Back returns to the choices; Shrink from there.
+  await page.click(choice('back'));
+  await page.click(choice('shrink'));
+  await page.waitForSelector('body[data-exemplar="phone.png, shrunk"]');
+  assert.equal(await exemplarSize(page), '512x384');
+  await page.setViewportSize({ width: 1400, height: 900 });
+  assert.deepEqual(errors, []);
+});
