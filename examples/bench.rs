@@ -49,11 +49,14 @@ fn main() {
                 steps.push(t.elapsed().as_secs_f64() * 1e3);
                 if std::env::var_os("BENCH_VERBOSE").is_some() {
                     println!(
-                        "  level {} (octave {}, w {}) iteration {}: {:.1} ms, {} changed",
+                        "  level {} (octave {}, w {}) iteration {} {:?} {:?} at {:.2}: {:.1} ms, {} changed",
                         event.level,
                         event.octave,
                         event.size,
                         event.iteration,
+                        event.kind,
+                        event.phase,
+                        event.progress,
                         steps[steps.len() - 1],
                         event.changed
                     );

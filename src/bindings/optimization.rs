@@ -11,6 +11,7 @@ use super::options::{OptionsReader, object};
 use super::pixels::render_into;
 use crate::core::{Error, from_rgba8};
 use crate::methods::optimization::SoftConstraints;
+use crate::methods::optimization::session::Phase;
 use crate::methods::optimization::teaching::{Field, field, offset_map};
 use crate::methods::optimization::{Energy, Event, EventKind, Options, Session};
 use crate::solvers::nn::Search;
@@ -88,6 +89,7 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
 
 fn event_object(e: &Event) -> JsValue {
     let kind = match e.kind {
+        EventKind::Part => "part",
         EventKind::Level => "level",
         EventKind::Iteration => "iteration",
         EventKind::Done => "done",
@@ -106,6 +108,16 @@ fn event_object(e: &Event) -> JsValue {
         ("changed", (e.changed as u32).into()),
         ("totalIterations", (e.total_iterations as u32).into()),
         ("solverIterations", (e.solver_iterations as u32).into()),
+        (
+            "phase",
+            match e.phase {
+                Phase::FirstMatch => "first-match",
+                Phase::EStep => "e-step",
+                Phase::MStep => "m-step",
+            }
+            .into(),
+        ),
+        ("progress", e.progress.into()),
     ])
 }
 
@@ -132,9 +144,13 @@ impl TextureOptimization {
         })
     }
 
-    /// Runs one EM iteration. Returns `{ kind: 'level' | 'iteration' | 'done', done, level,
-    /// levelCount, octave, scale, neighbourhoodSize, iteration, energy, matchEnergy, changed,
-    /// totalIterations, solverIterations }` (solverIterations: the gradient solve's
+    /// Runs one EM iteration. Returns `{ kind: 'level' | 'iteration' | 'part' | 'done', done,
+    /// level, levelCount, octave, scale, neighbourhoodSize, iteration, energy, matchEnergy,
+    /// changed, totalIterations, solverIterations, phase, progress }`. On a large output
+    /// (about 512x512 and up) an iteration is split over several steps so that none blocks
+    /// for long: those steps report kind 'part', the `phase` they stopped in ('first-match':
+    /// the M-step on a level's up-sampled output, 'e-step', 'm-step') and `progress`, the
+    /// share of the iteration done (0 to 1); `iteration` is then the one under way. (solverIterations: the gradient solve's
     /// conjugate-gradient iterations; energy: the pixel term ||x_p - z_p||^r whatever the
     /// `energy` option, so runs compare on one plot; matchEnergy: what the M-step minimised,
     /// with the wavelet term, equal to energy for 'pixels').

@@ -8,7 +8,6 @@ pub mod image;
 pub mod pyramid;
 pub mod rng;
 pub mod sample;
-pub mod sort;
 #[cfg(test)]
 pub mod testing;
 

@@ -119,7 +119,8 @@ export interface TextureOptimizationOptions {
 
 /** What one `TextureOptimization.step()` did. */
 export interface TextureOptimizationEvent {
-  kind: 'level' | 'iteration' | 'done';
+  /** 'part': a step inside an iteration (large outputs split iterations so no step blocks long). */
+  kind: 'level' | 'iteration' | 'part' | 'done';
   done: boolean;
   level: number;
   levelCount: number;
@@ -137,6 +138,10 @@ export interface TextureOptimizationEvent {
   totalIterations: number;
   /** Conjugate-gradient iterations of the gradient solve. */
   solverIterations: number;
+  /** Where the step stopped: the M-step on a level's up-sampled output, the E-step or the M-step. */
+  phase: 'first-match' | 'e-step' | 'm-step';
+  /** Share of the iteration done, 0 to 1 (1 for a whole iteration). */
+  progress: number;
 }
 
 /** One planned level of a `TextureOptimization`. */

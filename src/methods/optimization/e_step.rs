@@ -38,109 +38,181 @@ pub struct Matches<'a> {
 /// Returns the conjugate-gradient iterations of the gradient solve (the most over the
 /// channels; 0 without the gradient energy).
 pub fn e_step(m: &Matches<'_>, output: &mut Image, constraint: Option<&Constraint>) -> usize {
-    let (w, h, c) = (output.width(), output.height(), output.channels());
-    let (ew, eh) = (m.exemplar.width(), m.exemplar.height());
-    let ex = m.exemplar.data();
-    let gradient = m.mu > 0.0;
-    let mut weight = vec![0.0f32; w * h];
-    let mut colour = vec![0.0f32; w * h * c];
-    // Gradient term: per-edge weights and weighted target differences, indexed by first pixel.
-    let (mut h_weight, mut v_weight, mut h_diff, mut v_diff) = if gradient {
-        (
-            vec![0.0f32; w * h],
-            vec![0.0f32; w * h],
-            vec![0.0f32; w * h * c],
-            vec![0.0f32; w * h * c],
-        )
-    } else {
-        Default::default()
-    };
-    let nx = m.cols.len();
-    for (node, (&z, &omega)) in m.matches.iter().zip(m.node_weights).enumerate() {
-        let (ox, oy) = (m.cols[node % nx], m.rows[node / nx]);
-        for dy in 0..m.size {
-            let y = if m.wrap { (oy + dy) % h } else { oy + dy };
-            let zy = z.y as usize + dy;
-            let falloff = &m.falloff[dy * m.size..(dy + 1) * m.size];
-            // The row's pixels as at most two runs of contiguous output columns (the second
-            // when the neighbourhood wraps past the right border), so the inner loops run
-            // over plain slices.
-            let first = if m.wrap { m.size.min(w - ox) } else { m.size };
-            for (x0, dx0, len) in [(ox, 0, first), (0, first, m.size - first)] {
-                if len == 0 {
-                    continue;
-                }
-                let i = y * w + x0;
-                let zi = zy * ew + z.x as usize + dx0;
-                let g = &falloff[dx0..dx0 + len];
-                accumulate(
-                    c,
-                    omega,
-                    g,
-                    &ex[zi * c..(zi + len) * c],
-                    &mut weight[i..i + len],
-                    &mut colour[i * c..(i + len) * c],
-                );
-                if gradient {
-                    // Forward differences of the exemplar, zero past its border (as in the
-                    // feature map the M-step compares).
-                    let zx = z.x as usize + dx0;
-                    let down = (zy + 1).min(eh - 1) * ew + zx;
-                    accumulate_differences(
+    let mut sums = Sums::new(output, m.mu > 0.0);
+    sums.add(m, 0..m.matches.len());
+    sums.finish(m, output, constraint)
+}
+
+/// The E-step's running sums over the matched neighbourhoods, per output pixel: weights and
+/// weighted colours, and with the gradient term the per-edge weights and weighted target
+/// differences (indexed by the edge's first pixel). Nodes can be added in parts, so that a
+/// session can spread one E-step of a large output over several steps.
+pub struct Sums {
+    width: usize,
+    height: usize,
+    channels: usize,
+    weight: Vec<f32>,
+    colour: Vec<f32>,
+    h_weight: Vec<f32>,
+    v_weight: Vec<f32>,
+    h_diff: Vec<f32>,
+    v_diff: Vec<f32>,
+}
+
+impl Sums {
+    /// Zero sums for an output like `output`.
+    #[must_use]
+    pub fn new(output: &Image, gradient: bool) -> Self {
+        let (w, h, c) = (output.width(), output.height(), output.channels());
+        let (h_weight, v_weight, h_diff, v_diff) = if gradient {
+            (
+                vec![0.0f32; w * h],
+                vec![0.0f32; w * h],
+                vec![0.0f32; w * h * c],
+                vec![0.0f32; w * h * c],
+            )
+        } else {
+            Default::default()
+        };
+        Sums {
+            width: w,
+            height: h,
+            channels: c,
+            weight: vec![0.0f32; w * h],
+            colour: vec![0.0f32; w * h * c],
+            h_weight,
+            v_weight,
+            h_diff,
+            v_diff,
+        }
+    }
+
+    /// Adds the matched neighbourhoods of `nodes`.
+    pub fn add(&mut self, m: &Matches<'_>, nodes: std::ops::Range<usize>) {
+        let (w, h, c) = (self.width, self.height, self.channels);
+        let (ew, eh) = (m.exemplar.width(), m.exemplar.height());
+        let ex = m.exemplar.data();
+        let gradient = m.mu > 0.0;
+        let Sums {
+            weight,
+            colour,
+            h_weight,
+            v_weight,
+            h_diff,
+            v_diff,
+            ..
+        } = self;
+        let nx = m.cols.len();
+        for node in nodes {
+            let (z, omega) = (m.matches[node], m.node_weights[node]);
+            let (ox, oy) = (m.cols[node % nx], m.rows[node / nx]);
+            for dy in 0..m.size {
+                let y = if m.wrap { (oy + dy) % h } else { oy + dy };
+                let zy = z.y as usize + dy;
+                let falloff = &m.falloff[dy * m.size..(dy + 1) * m.size];
+                // The row's pixels as at most two runs of contiguous output columns (the second
+                // when the neighbourhood wraps past the right border), so the inner loops run
+                // over plain slices.
+                let first = if m.wrap { m.size.min(w - ox) } else { m.size };
+                for (x0, dx0, len) in [(ox, 0, first), (0, first, m.size - first)] {
+                    if len == 0 {
+                        continue;
+                    }
+                    let i = y * w + x0;
+                    let zi = zy * ew + z.x as usize + dx0;
+                    let g = &falloff[dx0..dx0 + len];
+                    accumulate(
                         c,
                         omega,
                         g,
-                        &ex[(zy * ew + zx) * c..],
-                        &ex[down * c..],
-                        ew - zx,
-                        (&mut h_weight[i..i + len], &mut h_diff[i * c..(i + len) * c]),
-                        (&mut v_weight[i..i + len], &mut v_diff[i * c..(i + len) * c]),
+                        &ex[zi * c..(zi + len) * c],
+                        &mut weight[i..i + len],
+                        &mut colour[i * c..(i + len) * c],
                     );
+                    if gradient {
+                        // Forward differences of the exemplar, zero past its border (as in the
+                        // feature map the M-step compares).
+                        let zx = z.x as usize + dx0;
+                        let down = (zy + 1).min(eh - 1) * ew + zx;
+                        accumulate_differences(
+                            c,
+                            omega,
+                            g,
+                            &ex[(zy * ew + zx) * c..],
+                            &ex[down * c..],
+                            ew - zx,
+                            (&mut h_weight[i..i + len], &mut h_diff[i * c..(i + len) * c]),
+                            (&mut v_weight[i..i + len], &mut v_diff[i * c..(i + len) * c]),
+                        );
+                    }
                 }
             }
         }
     }
-    if let Some(constraint) = constraint {
-        constraint.add_to_e_step(&mut colour, &mut weight);
-    }
-    let out = output.data_mut();
-    if !gradient {
-        for (i, &wsum) in weight.iter().enumerate() {
-            if wsum > 0.0 {
-                for k in 0..c {
-                    out[i * c + k] = colour[i * c + k] / wsum;
+
+    /// Turns the sums into the output: the weighted average, or with the gradient term the
+    /// screened Poisson solve; with the constraint's term when given. Returns the CG
+    /// iterations (0 without the gradient term).
+    pub fn finish(
+        self,
+        m: &Matches<'_>,
+        output: &mut Image,
+        constraint: Option<&Constraint>,
+    ) -> usize {
+        let (w, h, c) = (self.width, self.height, self.channels);
+        let gradient = m.mu > 0.0;
+        let Sums {
+            mut weight,
+            mut colour,
+            h_weight,
+            v_weight,
+            h_diff,
+            v_diff,
+            ..
+        } = self;
+        if let Some(constraint) = constraint {
+            constraint.add_to_e_step(&mut colour, &mut weight);
+        }
+        let out = output.data_mut();
+        if !gradient {
+            for (i, &wsum) in weight.iter().enumerate() {
+                if wsum > 0.0 {
+                    for k in 0..c {
+                        out[i * c + k] = colour[i * c + k] / wsum;
+                    }
                 }
             }
+            return 0;
         }
-        return 0;
-    }
-    let system = ScreenedPoisson {
-        width: w,
-        height: h,
-        wrap: m.wrap,
-        mu: m.mu,
-        data_weight: &weight,
-        h_weight: &h_weight,
-        v_weight: &v_weight,
-    };
-    let plane =
-        |src: &[f32], k: usize| -> Vec<f32> { src.iter().skip(k).step_by(c).copied().collect() };
-    let mut b = vec![0.0f32; w * h];
-    let mut iterations = 0;
-    for k in 0..c {
-        system.right_hand_side(
-            &plane(&colour, k),
-            &plane(&h_diff, k),
-            &plane(&v_diff, k),
-            &mut b,
-        );
-        let mut x = plane(out, k);
-        iterations = iterations.max(system.solve(&b, &mut x, CG_MAX_ITERATIONS, CG_TOLERANCE));
-        for (i, v) in x.into_iter().enumerate() {
-            out[i * c + k] = v;
+        let system = ScreenedPoisson {
+            width: w,
+            height: h,
+            wrap: m.wrap,
+            mu: m.mu,
+            data_weight: &weight,
+            h_weight: &h_weight,
+            v_weight: &v_weight,
+        };
+        let plane = |src: &[f32], k: usize| -> Vec<f32> {
+            src.iter().skip(k).step_by(c).copied().collect()
+        };
+        let mut b = vec![0.0f32; w * h];
+        let mut iterations = 0;
+        for k in 0..c {
+            system.right_hand_side(
+                &plane(&colour, k),
+                &plane(&h_diff, k),
+                &plane(&v_diff, k),
+                &mut b,
+            );
+            let mut x = plane(out, k);
+            iterations = iterations.max(system.solve(&b, &mut x, CG_MAX_ITERATIONS, CG_TOLERANCE));
+            for (i, v) in x.into_iter().enumerate() {
+                out[i * c + k] = v;
+            }
         }
+        iterations
     }
-    iterations
 }
 
 /// Adds one row run of a matched neighbourhood: `weight += omega g` and `colour += omega g z`

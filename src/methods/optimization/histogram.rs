@@ -9,13 +9,15 @@
 //! M-step sees it, and keeps the output's colour distribution the exemplar's.
 
 use crate::core::Image;
-use crate::core::sort::{keyed, payload, sort_keyed};
 
-/// Reused buffers of the ranking (one output's worth of keyed values, twice).
+/// Buckets of the ranking: values closer than (max - min) / 65536 rank in pixel order.
+const BUCKETS: usize = 1 << 16;
+
+/// Reused buffers of the ranking: one bucket per value step, and each free pixel's bucket.
 #[derive(Debug, Clone, Default)]
 pub struct Scratch {
-    items: Vec<u64>,
-    spare: Vec<u64>,
+    starts: Vec<u32>,
+    buckets: Vec<u32>,
 }
 
 /// Each channel's values of the exemplar, sorted: the target quantiles.
@@ -41,7 +43,12 @@ impl SortedChannels {
     /// Moves every value of `output` towards the exemplar value of the same rank, by `strength`
     /// (0 leaves it, 1 matches the histograms exactly). Pixels where `fixed` is above 0 (the
     /// soft constraints' mask: the user's colours, which need not be the exemplar's) keep their
-    /// values and are left out of the ranking. Equal values rank in pixel order.
+    /// values and are left out of the ranking.
+    ///
+    /// Ranks come from a counting sort over 65,536 value buckets between the channel's minimum
+    /// and maximum: two sequential passes instead of a sort of a million pixels per E-step
+    /// (a comparison sort took a quarter of a 1024x1024 synthesis). Values in one bucket, closer
+    /// than 1/65,536 of the range, rank in pixel order, the same on every platform.
     pub fn match_histogram(
         &self,
         output: &mut Image,
@@ -52,21 +59,51 @@ impl SortedChannels {
         let c = output.channels();
         let free = |i: usize| fixed.is_none_or(|f| f[i] <= 0.0);
         let data = output.data_mut();
-        let order = &mut scratch.items;
+        let pixels = data.len() / c;
         for (k, target) in self.channels.iter().enumerate().take(c) {
-            order.clear();
-            order.extend(
-                (0..data.len() / c)
-                    .filter(|&i| free(i))
-                    .map(|i| keyed(data[i * c + k], i as u32)),
-            );
-            let n = order.len();
-            sort_keyed(order, &mut scratch.spare);
+            let (mut lo, mut hi) = (f32::INFINITY, f32::NEG_INFINITY);
+            for i in (0..pixels).filter(|&i| free(i)) {
+                let v = data[i * c + k];
+                lo = lo.min(v);
+                hi = hi.max(v);
+            }
+            if lo > hi {
+                return; // nothing free
+            }
+            let scale = if hi > lo {
+                (BUCKETS - 1) as f32 / (hi - lo)
+            } else {
+                0.0
+            };
+            let bucket_of = |v: f32| (((v - lo) * scale) as usize).min(BUCKETS - 1) as u32;
+            scratch.starts.clear();
+            scratch.starts.resize(BUCKETS + 1, 0);
+            scratch.buckets.clear();
+            scratch.buckets.resize(pixels, 0);
+            let mut n = 0usize;
+            for i in 0..pixels {
+                if free(i) {
+                    let b = bucket_of(data[i * c + k]);
+                    scratch.buckets[i] = b;
+                    scratch.starts[b as usize + 1] += 1;
+                    n += 1;
+                }
+            }
+            for b in 0..BUCKETS {
+                scratch.starts[b + 1] += scratch.starts[b];
+            }
             let m = target.len();
-            for (rank, &item) in order.iter().enumerate() {
+            let per_rank = m as f64 / n as f64;
+            for i in 0..pixels {
+                if !free(i) {
+                    continue;
+                }
+                let b = scratch.buckets[i] as usize;
+                let rank = scratch.starts[b];
+                scratch.starts[b] += 1;
                 // The exemplar value at the same quantile (centre of the rank's bin).
-                let q = ((rank as f64 + 0.5) * m as f64 / n as f64) as usize;
-                let v = &mut data[payload(item) as usize * c + k];
+                let q = ((f64::from(rank) + 0.5) * per_rank) as usize;
+                let v = &mut data[i * c + k];
                 *v += strength * (target[q.min(m - 1)] - *v);
             }
         }

@@ -4,7 +4,7 @@
 //! flow-guided animation both drive it.
 
 use super::constraints::Constraint;
-use super::e_step::{Matches, e_step, robust_weight};
+use super::e_step::{Matches, Sums, robust_weight};
 use super::features::feature_map;
 use super::histogram::{Scratch, SortedChannels};
 use super::m_step::Matcher;
@@ -17,7 +17,9 @@ use crate::core::{Edge, Image, Result, Rng};
 use crate::methods::optimization::e_step::edge;
 use crate::solvers::nn::patches::gaussian_falloff;
 use crate::solvers::nn::patchmatch::QueryGrid;
-use crate::solvers::nn::{Neighbourhoods, Objective, Pos, Queries, Query, Search};
+use crate::solvers::nn::{
+    FeatureMap, Neighbourhoods, Objective, Pos, Progress, Queries, Query, Search,
+};
 
 /// The fixed settings of a level.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -61,6 +63,21 @@ struct OldGrid<'a> {
     size: usize,
 }
 
+/// An M-step under way: the output's feature map it compares with, its occurrence penalty,
+/// and where the search stopped.
+struct MStepRun {
+    map: FeatureMap,
+    occurrence: Option<Occurrence>,
+    progress: Progress,
+}
+
+/// An E-step under way: its IRLS weights, its sums, and the next node to add.
+struct EStepRun {
+    weights: Vec<f32>,
+    sums: Sums,
+    next: usize,
+}
+
 /// The state of one level between iterations.
 pub struct LevelSolver {
     setup: LevelSetup,
@@ -87,6 +104,10 @@ pub struct LevelSolver {
     /// This level's exemplar values sorted, for histogram matching, and its scratch space.
     histogram: SortedChannels,
     order: Scratch,
+    /// The M-step under way, between steps of a session that splits iterations.
+    running: Option<MStepRun>,
+    /// The E-step under way.
+    summing: Option<EStepRun>,
 }
 
 impl LevelSolver {
@@ -140,6 +161,8 @@ impl LevelSolver {
             coverage: Vec::new(),
             histogram: SortedChannels::new(exemplar),
             order: Scratch::default(),
+            running: None,
+            summing: None,
             setup,
             matcher,
             cols,
@@ -157,6 +180,18 @@ impl LevelSolver {
     #[must_use]
     pub fn grid(&self) -> (&[usize], &[usize]) {
         (&self.cols, &self.rows)
+    }
+
+    /// Nodes of the grid X†.
+    #[must_use]
+    pub fn node_count(&self) -> usize {
+        self.matches.len()
+    }
+
+    /// Values per neighbourhood vector.
+    #[must_use]
+    pub fn vector_len(&self) -> usize {
+        self.matcher.space().vector_len()
     }
 
     /// z_p per node, row by row.
@@ -235,19 +270,72 @@ impl LevelSolver {
         constraint: Option<&Constraint>,
         rng: &mut Rng,
     ) -> usize {
-        let LevelSetup { mu, wrap, size, .. } = self.setup;
-        let map = feature_map(output, mu, edge(wrap));
-        let space = self.matcher.space();
-        let grid = QueryGrid {
-            cols: &self.cols,
-            rows: &self.rows,
-        };
+        self.begin_m_step(output);
+        let mut unlimited = usize::MAX;
+        self.resume_m_step(constraint, rng, &mut unlimited)
+            .expect("an unlimited M-step finishes")
+    }
+
+    /// Starts an M-step on `output` (its feature map and occurrence penalty are fixed now);
+    /// [`LevelSolver::resume_m_step`] runs it.
+    pub fn begin_m_step(&mut self, output: &Image) {
+        let LevelSetup { mu, wrap, .. } = self.setup;
         let occurrence = self.occurrence();
         if let Some(o) = &occurrence {
             self.coverage.clear();
             self.coverage.extend_from_slice(o.coverage());
         }
-        let penalty = occurrence.as_ref().map(|o| move |z: Pos| o.penalty(z));
+        self.running = Some(MStepRun {
+            map: feature_map(output, mu, edge(wrap)),
+            occurrence,
+            progress: self.matcher.progress(self.matches.len()),
+        });
+    }
+
+    /// Whether an E-step is begun and not finished.
+    #[must_use]
+    pub fn e_step_running(&self) -> bool {
+        self.summing.is_some()
+    }
+
+    /// The share of the running E-step's nodes summed (None when none runs).
+    #[must_use]
+    pub fn e_step_fraction(&self) -> Option<f64> {
+        self.summing
+            .as_ref()
+            .map(|r| r.next as f64 / self.matches.len().max(1) as f64)
+    }
+
+    /// Whether an M-step is begun and not finished.
+    #[must_use]
+    pub fn m_step_running(&self) -> bool {
+        self.running.is_some()
+    }
+
+    /// The share of the running M-step's node visits done (None when none runs).
+    #[must_use]
+    pub fn m_step_fraction(&self) -> Option<f64> {
+        self.running.as_ref().map(|r| r.progress.fraction())
+    }
+
+    /// Runs the begun M-step for at most `budget` more node visits, taking the visits made
+    /// off it (the result does not depend on where it stops). Returns how many matches
+    /// changed once it is done, else None.
+    pub fn resume_m_step(
+        &mut self,
+        constraint: Option<&Constraint>,
+        rng: &mut Rng,
+        budget: &mut usize,
+    ) -> Option<usize> {
+        let LevelSetup { wrap, size, .. } = self.setup;
+        let mut run = self.running.take().expect("an M-step is begun");
+        let space = self.matcher.space();
+        let grid = QueryGrid {
+            cols: &self.cols,
+            rows: &self.rows,
+        };
+        let occurrence = run.occurrence.as_ref();
+        let penalty = occurrence.map(|o| move |z: Pos| o.penalty(z));
         let objective = Objective {
             penalty: penalty.as_ref().map(|f| f as &dyn Fn(Pos) -> f32),
         };
@@ -256,18 +344,26 @@ impl LevelSolver {
             "the session refuses constraints with a wavelet energy"
         );
         let constraint = constraint.filter(|_| self.wavelet.is_none());
+        let map = &run.map;
         let plain = || {
-            GridQueries::new(&map, (&self.cols, &self.rows), size, wrap)
+            GridQueries::new(map, (&self.cols, &self.rows), size, wrap)
                 .transformed(self.wavelet.as_ref())
         };
-        let changed = self.matcher.m_step(
+        let before = run.progress.visits();
+        let done = self.matcher.resume(
             &mut plain().constrained(constraint, space.weights()),
             &objective,
             grid,
-            &mut self.matches,
-            &mut self.objective,
+            (&mut self.matches, &mut self.objective),
             rng,
+            &mut run.progress,
+            *budget,
         );
+        *budget = budget.saturating_sub(run.progress.visits() - before);
+        if !done {
+            self.running = Some(run);
+            return None;
+        }
         let mut query = Query::new(space.vector_len());
         if constraint.is_none() {
             // Costs are distance + penalty of the match (accepted candidates have full sums).
@@ -277,7 +373,7 @@ impl LevelSolver {
                 .zip(&self.objective)
                 .zip(&self.matches)
             {
-                *d = cost - occurrence.as_ref().map_or(0.0, |o| o.penalty(m));
+                *d = cost - occurrence.map_or(0.0, |o| o.penalty(m));
             }
         } else {
             // The IRLS weights and the reported energy are about the texture term alone.
@@ -301,7 +397,7 @@ impl LevelSolver {
                 );
             }
         }
-        changed
+        Some(run.progress.changed())
     }
 
     /// The occurrence penalty for this M-step (None when it is off, or before the level's first
@@ -344,13 +440,21 @@ impl LevelSolver {
         output: &mut Image,
         constraint: Option<&Constraint>,
     ) -> usize {
+        self.begin_e_step(output);
+        let mut unlimited = usize::MAX;
+        self.resume_e_step(exemplar, &mut unlimited);
+        self.finish_e_step(exemplar, output, constraint)
+    }
+
+    /// Starts an E-step on an output like `output`: the IRLS weights are fixed now, from the
+    /// last distances (all 1 before the first M-step).
+    pub fn begin_e_step(&mut self, output: &Image) {
         let r = self.setup.r;
         // With a wavelet energy the E-step stays this pixel average (the matches, chosen under
         // eq. 4, carry the wavelet term): the exact minimiser of eq. 4 over x with weighted
         // coefficients is a linear solve with W^T D W, which is not diagonal (a block-coupled
         // system per neighbourhood), and with all weights 1 it is the pixel average anyway
         // (Parseval). The IRLS weights below come from the full eq. 4 distances.
-        // IRLS: weights from the last distances (all 1 before the first M-step).
         let weights: Vec<f32> = self
             .distances
             .iter()
@@ -362,18 +466,53 @@ impl LevelSolver {
                 }
             })
             .collect();
-        let m = Matches {
+        self.summing = Some(EStepRun {
+            weights,
+            sums: Sums::new(output, self.setup.mu > 0.0),
+            next: 0,
+        });
+    }
+
+    fn matches_for<'a>(&'a self, exemplar: &'a Image, weights: &'a [f32]) -> Matches<'a> {
+        Matches {
             exemplar,
             cols: &self.cols,
             rows: &self.rows,
             matches: &self.matches,
-            node_weights: &weights,
+            node_weights: weights,
             falloff: &self.falloff,
             size: self.setup.size,
             wrap: self.setup.wrap,
             mu: self.setup.mu,
-        };
-        let iterations = e_step(&m, output, constraint);
+        }
+    }
+
+    /// Adds at most `budget` more nodes to the begun E-step's sums, taking them off it.
+    /// Returns true when every node is in.
+    pub fn resume_e_step(&mut self, exemplar: &Image, budget: &mut usize) -> bool {
+        let mut run = self.summing.take().expect("an E-step is begun");
+        let nodes = self.matches.len();
+        let end = run.next.saturating_add(*budget).min(nodes);
+        let m = self.matches_for(exemplar, &run.weights);
+        run.sums.add(&m, run.next..end);
+        *budget -= end - run.next;
+        run.next = end;
+        let done = end == nodes;
+        self.summing = Some(run);
+        done
+    }
+
+    /// Ends the begun E-step (every node added): writes the output and matches its histogram.
+    pub fn finish_e_step(
+        &mut self,
+        exemplar: &Image,
+        output: &mut Image,
+        constraint: Option<&Constraint>,
+    ) -> usize {
+        let run = self.summing.take().expect("an E-step is begun");
+        debug_assert_eq!(run.next, self.matches.len(), "every node is summed");
+        let m = self.matches_for(exemplar, &run.weights);
+        let iterations = run.sums.finish(&m, output, constraint);
         let strength = self.setup.histogram_matching;
         if strength > 0.0 {
             let fixed = constraint

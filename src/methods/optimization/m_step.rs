@@ -6,7 +6,7 @@ use crate::core::Rng;
 use crate::solvers::nn::kmeans_tree::KMeansTree;
 use crate::solvers::nn::patchmatch::{self, QueryGrid};
 use crate::solvers::nn::{
-    FeatureMap, Neighbourhoods, Objective, Pos, Queries, Query, Search, exact,
+    FeatureMap, Neighbourhoods, Objective, Pos, Progress, Queries, Search, exact,
 };
 
 /// PatchMatch sweeps per M-step (forward, backward, forward). The EM loop calls it again every
@@ -68,41 +68,79 @@ impl Matcher {
         costs: &mut [f32],
         rng: &mut Rng,
     ) -> usize {
-        match self.search {
-            Search::PatchMatch => patchmatch::improve(
-                &self.space,
-                queries,
+        let mut progress = self.progress(matches.len());
+        self.resume(
+            queries,
+            objective,
+            grid,
+            (matches, costs),
+            rng,
+            &mut progress,
+            usize::MAX,
+        );
+        progress.changed()
+    }
+
+    /// The progress of a new M-step over `nodes` nodes.
+    #[must_use]
+    pub fn progress(&self, nodes: usize) -> Progress {
+        let passes = match self.search {
+            Search::PatchMatch => self.passes,
+            Search::Exact | Search::KMeansTree => 1,
+        };
+        Progress::new(nodes, passes)
+    }
+
+    /// [`Matcher::m_step`] in parts: at most `limit` more node visits from where `progress`
+    /// stopped, with the same result as one run. Returns true when the M-step is done.
+    #[allow(clippy::too_many_arguments)]
+    pub fn resume(
+        &self,
+        queries: &mut dyn Queries,
+        objective: &Objective<'_>,
+        grid: QueryGrid<'_>,
+        (matches, costs): (&mut [Pos], &mut [f32]),
+        rng: &mut Rng,
+        progress: &mut Progress,
+        limit: usize,
+    ) -> bool {
+        if self.search == Search::PatchMatch {
+            let search = patchmatch::Search {
+                space: &self.space,
                 objective,
                 grid,
-                matches,
-                costs,
-                self.passes,
-                rng,
-            ),
-            Search::Exact | Search::KMeansTree => {
-                let mut changed = 0;
-                let mut query = Query::new(self.space.vector_len());
-                for (n, (m, d)) in matches.iter_mut().zip(costs.iter_mut()).enumerate() {
-                    queries.fill(n, &mut query);
-                    *d = objective.cost(&self.space, &query, *m, f32::INFINITY);
-                    let (pos, cost) = match &self.tree {
-                        // The tree is built for the fall-off weights: it proposes a candidate
-                        // for the query, which is then scored under the objective, so a match
-                        // still only changes to a better one.
-                        Some(tree) => {
-                            let pos = tree.nearest(&self.space, &query.values).0;
-                            (pos, objective.cost(&self.space, &query, pos, *d))
-                        }
-                        None => exact::nearest_by(&self.space, objective, &query),
-                    };
-                    if cost < *d {
-                        changed += usize::from(pos != *m);
-                        *m = pos;
-                        *d = cost;
-                    }
-                }
-                changed
-            }
+            };
+            return search.resume(queries, matches, costs, rng, progress, limit);
         }
+        let mut query = progress.take_query();
+        query.values.resize(self.space.vector_len(), 0.0);
+        let mut visited = 0;
+        while !progress.is_done() && visited < limit {
+            let n = progress.next;
+            let (m, d) = (&mut matches[n], &mut costs[n]);
+            queries.fill(n, &mut query);
+            *d = objective.cost(&self.space, &query, *m, f32::INFINITY);
+            let (pos, cost) = match &self.tree {
+                // The tree is built for the fall-off weights: it proposes a candidate for the
+                // query, which is then scored under the objective, so a match still only
+                // changes to a better one.
+                Some(tree) => {
+                    let pos = tree.nearest(&self.space, &query.values).0;
+                    (pos, objective.cost(&self.space, &query, pos, *d))
+                }
+                None => exact::nearest_by(&self.space, objective, &query),
+            };
+            if cost < *d {
+                if pos != *m {
+                    progress.mark_changed(n);
+                }
+                *m = pos;
+                *d = cost;
+            }
+            visited += 1;
+            progress.advance(matches.len());
+        }
+        progress.put_query(query);
+        progress.is_done()
     }
 }

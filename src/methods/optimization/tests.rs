@@ -454,3 +454,69 @@ fn no_wash_out_with_the_gradient_energy_and_its_solve_converges() {
         );
     }
 }
+
+#[test]
+fn splitting_iterations_over_steps_changes_no_output() {
+    // Tiny step budgets split every iteration into many parts (first M-step, E-step sums,
+    // M-step sweeps); the output, the matches and the energies must equal one-step iterations.
+    let exemplar = crate::core::testing::noise(32, 32, 3, 8);
+    for search in [Search::PatchMatch, Search::Exact] {
+        let options = Options {
+            output_width: 48,
+            output_height: 40,
+            neighbourhood_sizes: vec![8, 4],
+            iterations: 2,
+            search,
+            ..Options::default()
+        };
+        let whole = {
+            let mut s = Session::new(&exemplar, options.clone()).unwrap();
+            let mut events = Vec::new();
+            loop {
+                let e = s.step().unwrap();
+                assert_ne!(
+                    e.kind,
+                    EventKind::Part,
+                    "the default budget splits nothing here"
+                );
+                events.push(e);
+                if e.kind == EventKind::Done {
+                    break;
+                }
+            }
+            (
+                s.output().unwrap().clone(),
+                s.history().to_vec(),
+                events.len(),
+            )
+        };
+        let mut s = Session::new(&exemplar, options).unwrap();
+        s.set_step_work(3000);
+        let (mut parts, mut whole_steps, mut phases) = (0, 0, std::collections::HashSet::new());
+        let mut last_progress = 0.0;
+        loop {
+            let e = s.step().unwrap();
+            if e.kind == EventKind::Part {
+                parts += 1;
+                phases.insert(format!("{:?}", e.phase));
+                assert!(e.progress > 0.0 && e.progress < 1.0, "{e:?}");
+                assert!(
+                    e.progress >= last_progress,
+                    "progress only grows within an iteration"
+                );
+                last_progress = e.progress;
+            } else {
+                whole_steps += 1;
+                last_progress = 0.0;
+            }
+            if e.kind == EventKind::Done {
+                break;
+            }
+        }
+        assert_eq!(whole_steps, whole.2, "{search:?}");
+        assert!(parts > whole_steps, "{search:?}: {parts} parts");
+        assert_eq!(phases.len(), 3, "{phases:?}");
+        assert_eq!(s.history(), whole.1.as_slice(), "{search:?}");
+        assert_eq!(s.output().unwrap(), &whole.0, "{search:?}");
+    }
+}

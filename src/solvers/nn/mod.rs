@@ -94,6 +94,81 @@ impl Queries for Stored<'_> {
     }
 }
 
+/// Where an M-step stopped: the sweep (PatchMatch makes several; the other searches one) and
+/// the next node in it, the nodes whose match changed, and the query buffer. Searches visit
+/// nodes in a fixed order, so an M-step can stop after any node and resume later with the same
+/// result, which lets a session bound the work of one step on large outputs.
+#[derive(Debug, Clone)]
+pub struct Progress {
+    pub passes: usize,
+    pub pass: usize,
+    pub next: usize,
+    changed: Vec<bool>,
+    query: Query,
+}
+
+impl Progress {
+    #[must_use]
+    pub fn new(nodes: usize, passes: usize) -> Self {
+        Progress {
+            passes: if nodes == 0 { 0 } else { passes },
+            pass: 0,
+            next: 0,
+            changed: vec![false; nodes],
+            query: Query::default(),
+        }
+    }
+
+    /// Moves to the next node of `nodes`, and to the next sweep after the last one.
+    pub fn advance(&mut self, nodes: usize) {
+        self.next += 1;
+        if self.next >= nodes {
+            self.next = 0;
+            self.pass += 1;
+        }
+    }
+
+    #[must_use]
+    pub fn is_done(&self) -> bool {
+        self.pass >= self.passes
+    }
+
+    /// Node visits made so far.
+    #[must_use]
+    pub fn visits(&self) -> usize {
+        self.pass * self.changed.len() + self.next
+    }
+
+    /// The share of the M-step's node visits done, 0 to 1.
+    #[must_use]
+    pub fn fraction(&self) -> f64 {
+        let nodes = self.changed.len();
+        if self.passes == 0 || nodes == 0 {
+            return 1.0;
+        }
+        (self.pass * nodes + self.next) as f64 / (self.passes * nodes) as f64
+    }
+
+    pub fn mark_changed(&mut self, node: usize) {
+        self.changed[node] = true;
+    }
+
+    /// Nodes whose match changed so far.
+    #[must_use]
+    pub fn changed(&self) -> usize {
+        self.changed.iter().filter(|&&c| c).count()
+    }
+
+    /// Takes the query buffer out (to fill while the progress is borrowed elsewhere).
+    pub fn take_query(&mut self) -> Query {
+        std::mem::take(&mut self.query)
+    }
+
+    pub fn put_query(&mut self, query: Query) {
+        self.query = query;
+    }
+}
+
 /// What a search minimises: the weighted distance of the query plus a penalty on the candidate
 /// (e.g. for exemplar neighbourhoods already used too often). The default is the plain
 /// distance.

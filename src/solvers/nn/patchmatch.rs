@@ -4,7 +4,7 @@
 //! iteration's matches, so the EM iterations double as PatchMatch iterations.
 
 use super::patches::{Neighbourhoods, Pos};
-use super::{Objective, Queries, Query};
+use super::{Objective, Progress, Queries};
 use crate::core::Rng;
 
 /// The layout of the query grid: column and row positions (in output pixels) of the nodes. Nodes
@@ -31,26 +31,63 @@ pub fn improve(
     passes: usize,
     rng: &mut Rng,
 ) -> usize {
-    let (nx, ny) = (grid.cols.len(), grid.rows.len());
-    let (ex, ey) = space.extent();
-    let max_radius = ex.max(ey) as i64;
-    let mut changed = vec![false; matches.len()];
-    let mut query = Query::new(space.vector_len());
-    for pass in 0..passes {
-        let forward = pass % 2 == 0;
-        let step: isize = if forward { 1 } else { -1 };
-        for k in 0..nx * ny {
+    let mut progress = Progress::new(matches.len(), passes);
+    let search = Search {
+        space,
+        objective,
+        grid,
+    };
+    search.resume(queries, matches, distances, rng, &mut progress, usize::MAX);
+    progress.changed()
+}
+
+/// What a PatchMatch M-step searches over.
+#[derive(Clone, Copy)]
+pub struct Search<'a> {
+    pub space: &'a Neighbourhoods,
+    pub objective: &'a Objective<'a>,
+    pub grid: QueryGrid<'a>,
+}
+
+impl Search<'_> {
+    /// [`improve`] in parts: visits at most `limit` more nodes from where `progress` stopped
+    /// (the sweeps run in a fixed order, so stopping and resuming gives the same matches as one
+    /// run). Returns true when every sweep is done.
+    pub fn resume(
+        &self,
+        queries: &mut dyn Queries,
+        matches: &mut [Pos],
+        distances: &mut [f32],
+        rng: &mut Rng,
+        progress: &mut Progress,
+        limit: usize,
+    ) -> bool {
+        let Search {
+            space,
+            objective,
+            grid,
+        } = *self;
+        let (nx, ny) = (grid.cols.len(), grid.rows.len());
+        let (ex, ey) = space.extent();
+        let max_radius = ex.max(ey) as i64;
+        let mut query = std::mem::take(&mut progress.query);
+        let mut visited = 0;
+        while progress.pass < progress.passes && visited < limit {
+            let pass = progress.pass;
+            let forward = pass % 2 == 0;
+            let step: isize = if forward { 1 } else { -1 };
+            let k = progress.next;
             let i = if forward { k } else { nx * ny - 1 - k };
             let (gx, gy) = (i % nx, i / nx);
             queries.fill(i, &mut query);
             if pass == 0 {
                 distances[i] = objective.cost(space, &query, matches[i], f32::INFINITY);
             }
-            let query = &query;
+            let q = &query;
             let mut best = (matches[i], distances[i]);
             let consider = |candidate: Pos, best: &mut (Pos, f32)| {
                 if candidate != best.0 {
-                    let d = objective.cost(space, query, candidate, best.1);
+                    let d = objective.cost(space, q, candidate, best.1);
                     if d < best.1 {
                         *best = (candidate, d);
                     }
@@ -59,19 +96,19 @@ pub fn improve(
             // Propagation from the already-visited horizontal and vertical neighbours.
             let qx = gx as isize - step;
             if (0..nx as isize).contains(&qx) {
-                let q = matches[gy * nx + qx as usize];
+                let m = matches[gy * nx + qx as usize];
                 let shift = grid.cols[gx] as i64 - grid.cols[qx as usize] as i64;
                 consider(
-                    space.clamp(i64::from(q.x) + shift, i64::from(q.y)),
+                    space.clamp(i64::from(m.x) + shift, i64::from(m.y)),
                     &mut best,
                 );
             }
             let qy = gy as isize - step;
             if (0..ny as isize).contains(&qy) {
-                let q = matches[qy as usize * nx + gx];
+                let m = matches[qy as usize * nx + gx];
                 let shift = grid.rows[gy] as i64 - grid.rows[qy as usize] as i64;
                 consider(
-                    space.clamp(i64::from(q.x), i64::from(q.y) + shift),
+                    space.clamp(i64::from(m.x), i64::from(m.y) + shift),
                     &mut best,
                 );
             }
@@ -88,13 +125,16 @@ pub fn improve(
                 radius /= 2;
             }
             if best.0 != matches[i] {
-                changed[i] = true;
+                progress.changed[i] = true;
             }
             matches[i] = best.0;
             distances[i] = best.1;
+            visited += 1;
+            progress.advance(nx * ny);
         }
+        progress.query = query;
+        progress.is_done()
     }
-    changed.iter().filter(|&&c| c).count()
 }
 
 #[cfg(test)]
