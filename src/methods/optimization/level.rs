@@ -188,6 +188,12 @@ impl LevelSolver {
         self.matches.len()
     }
 
+    /// PatchMatch sweeps per M-step (1 for the other searches).
+    #[must_use]
+    pub fn passes(&self) -> usize {
+        self.matcher.progress(1).passes
+    }
+
     /// Values per neighbourhood vector.
     #[must_use]
     pub fn vector_len(&self) -> usize {

@@ -13,13 +13,22 @@ use crate::core::sample::resize_bilinear;
 use crate::core::{Edge, Error, Image, Result, Rng};
 use crate::solvers::nn::Pos;
 
-/// The work one step may do, in vector values: an M-step's node visit counts as the vector
-/// length plus [`VISIT_OVERHEAD`], the E-step as one such visit per node. Iterations over this
-/// are split over several steps (a part of the M-step each), so that no step of a 1024x1024
-/// synthesis blocks for long (about 80 ms natively, 100 ms in wasm, on this project's 2-core
-/// machine). A 256x256 synthesis from a 128x128 exemplar never splits (its largest iteration,
-/// the first at neighbourhood size 8, is about 38 M).
-pub const STEP_WORK: usize = 40 << 20;
+/// Sessions whose output has more pixels than this (larger than 256x512) split their iterations
+/// over several steps, each stopping after about [`STEP_MILLISECONDS`], so that no step of a
+/// large synthesis blocks for long (one iteration at neighbourhood size 8 takes about 0.5 s at
+/// 1024x1024). Smaller sessions step whole iterations, as the paper's Fig. 3 counts them.
+/// Where a split iteration stops changes no output.
+pub const SPLIT_PIXELS: usize = 1 << 17;
+
+/// The time a step of a split iteration works before it stops. It looks at the clock between
+/// chunks of about [`CHUNK_WORK`] (a few milliseconds); the E-step's last part (the average,
+/// histogram matching, the M-step's feature map) cannot be cut and starts only in the first
+/// third of a step.
+pub const STEP_MILLISECONDS: f64 = 60.0;
+
+/// Work between two looks at the clock, in vector values: an M-step's node visit counts as the
+/// vector length plus [`VISIT_OVERHEAD`], adding a node to the E-step's sums as one such visit.
+pub const CHUNK_WORK: usize = 1 << 21;
 
 /// The fixed cost of visiting a node (making its query, proposing candidates), in vector
 /// values: measured at 1024x1024, a visit takes 0.7 us at size 8 (192 values) and 6.4 us at
@@ -52,7 +61,7 @@ pub enum Phase {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum EventKind {
     /// Part of an iteration: on large outputs an iteration is split over several steps (see
-    /// [`STEP_WORK`]); the event names the phase and the share of the iteration done.
+    /// [`SPLIT_PIXELS`]); the event names the phase and the share of the iteration done.
     Part,
     /// The first iteration of a new level (resolution or neighbourhood size changed).
     Level,
@@ -165,8 +174,10 @@ pub struct Session {
     stage: Stage,
     /// The iteration under way is its level's first since the level was entered.
     new_level: bool,
-    /// The work a step may do ([`STEP_WORK`] unless set).
-    step_work: usize,
+    /// With split iterations (see [`SPLIT_PIXELS`]): how long a step works, and the work
+    /// between looks at the clock.
+    split: Option<f64>,
+    chunk_work: usize,
 }
 
 impl Session {
@@ -183,7 +194,9 @@ impl Session {
             solver_iterations: 0,
             stage: Stage::Start,
             new_level: false,
-            step_work: STEP_WORK,
+            split: (options.output_width * options.output_height > SPLIT_PIXELS)
+                .then_some(STEP_MILLISECONDS),
+            chunk_work: CHUNK_WORK,
             rng: Rng::new(options.seed),
             options,
             levels,
@@ -247,10 +260,12 @@ impl Session {
         Ok(())
     }
 
-    /// Sets the work one step may do (see [`STEP_WORK`]; at least 1): smaller gives more,
-    /// shorter steps. Where iterations split changes no output.
-    pub fn set_step_work(&mut self, work: usize) {
-        self.step_work = work.max(1);
+    /// Sets whether iterations split over steps and how long such a step works (None: whole
+    /// iterations; see [`SPLIT_PIXELS`] for the default), and the work between looks at the
+    /// clock (see [`CHUNK_WORK`]). Where iterations split changes no output.
+    pub fn set_step_budget(&mut self, milliseconds: Option<f64>, chunk_work: usize) {
+        self.split = milliseconds.map(|ms| ms.max(0.0));
+        self.chunk_work = chunk_work.max(1);
     }
 
     /// Channels of the exemplar (and of the output and of constraint targets).
@@ -329,7 +344,7 @@ impl Session {
     }
 
     /// Runs one EM iteration and reports it; on a large output, part of one (see
-    /// [`STEP_WORK`]; the event's kind is then [`EventKind::Part`]).
+    /// [`SPLIT_PIXELS`]; the event's kind is then [`EventKind::Part`]).
     pub fn step(&mut self) -> Result<Event> {
         if self.is_done() {
             let mut last = self.last.expect("a finished session has stepped");
@@ -339,8 +354,7 @@ impl Session {
         if self.entered != Some(self.level) {
             self.enter_level()?;
         }
-        let mut budget = self.step_work;
-        let Some(changed) = self.advance(&mut budget)? else {
+        let Some(changed) = self.advance()? else {
             return Ok(self.part_event());
         };
         let kind = if std::mem::take(&mut self.new_level) {
@@ -465,15 +479,26 @@ impl Session {
     }
 
     /// Advances the current EM iteration: (on a fresh level, an M-step on the up-sampled output
-    /// first), E-step with IRLS weights, M-step, until it is done or `budget` (node visits
-    /// times vector length, see [`STEP_WORK`]) is spent. Returns how many matches changed in
+    /// first), E-step with IRLS weights, M-step. With split iterations (see [`SPLIT_PIXELS`])
+    /// it stops once the step's time is up, between chunks. Returns how many matches changed in
     /// the final M-step once the iteration is done, else None (the next step resumes it).
-    fn advance(&mut self, budget: &mut usize) -> Result<Option<usize>> {
+    fn advance(&mut self) -> Result<Option<usize>> {
         let lv = self.levels[self.level];
         let exemplar = &self.exemplars[lv.octave];
         let solver = self.solver.as_mut().expect("level entered");
         let constraint = self.constraint.as_ref();
         let len = solver.vector_len() + VISIT_OVERHEAD;
+        let chunk = match self.split {
+            Some(_) => (self.chunk_work / len).max(1),
+            None => usize::MAX,
+        };
+        let split = self.split;
+        let started = crate::core::clock::now_ms();
+        let time_up = |share: f64| {
+            split.is_some_and(|ms| crate::core::clock::now_ms() - started >= share * ms)
+        };
+        // Whether this step did any work yet (it always does some before it stops).
+        let mut worked = false;
         loop {
             match self.stage {
                 Stage::Start => {
@@ -496,13 +521,14 @@ impl Session {
                     } else {
                         Stage::EStep
                     };
+                    continue;
                 }
                 Stage::FirstMatch | Stage::MStep => {
-                    let mut visits = (*budget / len).max(1);
-                    let before = visits;
-                    let done = solver.resume_m_step(constraint, &mut self.rng, &mut visits);
-                    *budget = budget.saturating_sub((before - visits) * len);
-                    match (self.stage, done) {
+                    let mut visits = chunk;
+                    match (
+                        self.stage,
+                        solver.resume_m_step(constraint, &mut self.rng, &mut visits),
+                    ) {
                         (_, None) => {}
                         (Stage::FirstMatch, Some(_)) => self.stage = Stage::EStep,
                         (_, Some(changed)) => {
@@ -516,21 +542,22 @@ impl Session {
                     if !solver.e_step_running() {
                         solver.begin_e_step(output);
                     }
-                    let mut nodes = (*budget / len).max(1);
-                    let before = nodes;
-                    let summed = solver.resume_e_step(exemplar, &mut nodes);
-                    *budget = budget.saturating_sub((before - nodes) * len);
-                    if summed {
+                    let summed = solver.e_step_fraction().is_some_and(|f| f >= 1.0);
+                    if !summed {
+                        let mut nodes = chunk;
+                        solver.resume_e_step(exemplar, &mut nodes);
+                    } else if worked && time_up(1.0 / 3.0) {
+                        // The last part cannot be cut: leave it to a fresh step.
+                        return Ok(None);
+                    } else {
                         self.solver_iterations = solver.finish_e_step(exemplar, output, constraint);
-                        // Averaging, histogram matching and the M-step's feature map: about
-                        // a tenth of the E-step's sums.
-                        *budget = budget.saturating_sub(solver.node_count() * len / 10);
                         solver.begin_m_step(output);
                         self.stage = Stage::MStep;
                     }
                 }
             }
-            if *budget == 0 {
+            worked = true;
+            if time_up(1.0) {
                 return Ok(None);
             }
         }

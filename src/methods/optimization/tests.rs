@@ -491,7 +491,7 @@ fn splitting_iterations_over_steps_changes_no_output() {
             )
         };
         let mut s = Session::new(&exemplar, options).unwrap();
-        s.set_step_work(3000);
+        s.set_step_budget(Some(0.0), 3000);
         let (mut parts, mut whole_steps, mut phases) = (0, 0, std::collections::HashSet::new());
         let mut last_progress = 0.0;
         loop {
