@@ -1,6 +1,7 @@
 //! Layer 1: image buffers, decoding and encoding, resampling, pyramids, gradients, the seeded RNG
 //! and the error type. Plain Rust with no JavaScript in sight.
 
+pub mod budget;
 pub mod codec;
 pub mod error;
 pub mod gradient;
