@@ -131,7 +131,8 @@ mod tests {
             )
         };
         let bytes = |side| brush(side, 3584).unwrap().working_set().bytes();
-        assert!(bytes(1024) > 8 * bytes(256));
+        // The undo history's 64 MiB is there at any size.
+        assert!(bytes(1024) > 2 * bytes(256));
         assert!(brush(256, 1024).is_ok());
         let e = brush(1024, 64).err().unwrap().to_string();
         assert!(

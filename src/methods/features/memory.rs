@@ -82,7 +82,8 @@ mod tests {
             };
             let bytes = |side| make(side, 3584).unwrap().working_set().bytes();
             let (small, large) = (bytes(256), bytes(1024));
-            assert!(large > 8 * small, "{placement:?}: {small} -> {large}");
+            // The inputs and the search are the exemplar's size at any output size.
+            assert!(large > 4 * small, "{placement:?}: {small} -> {large}");
             assert!(make(2048, 1024).is_ok());
             let e = make(4096, 256).err().unwrap().to_string();
             assert!(
