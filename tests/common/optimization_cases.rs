@@ -173,7 +173,8 @@ fn wavelet_energies_run_from_js_and_bad_values_are_named() {
 
 #[wasm_bindgen_test]
 fn a_huge_output_is_refused_by_the_constructor_naming_the_budget() {
-    let ex = Exemplar::from_bytes(GRAVEL_64).unwrap();
+    // An RGB exemplar (gravel_64 is grey: a third of the colour buffers, under 1024 MiB).
+    let ex = Exemplar::from_bytes(include_bytes!("../../www/samples/tiles_64.png")).unwrap();
     let huge = |budget: Option<JsValue>| {
         let mut entries = vec![("outputWidth", 4096.into()), ("outputHeight", 4096.into())];
         if let Some(b) = budget {
