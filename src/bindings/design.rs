@@ -148,8 +148,9 @@ pub fn deformation_set(exemplar: &Exemplar, ranges: JsValue) -> JsResult<Array> 
 }
 
 fn read_tileable_options(options: &JsValue) -> JsResult<TileableOptions> {
-    let js = OptionsReader::new(options, &["overlapX", "overlapY"])?;
+    let js = OptionsReader::new(options, &["overlapX", "overlapY", "memoryBudgetMiB"])?;
     Ok(TileableOptions {
+        memory_budget_mib: Some(js.memory_budget()?),
         overlap_x: js.integer("overlapX", 0, 4096)?.map(|v| v as usize),
         overlap_y: js.integer("overlapY", 0, 4096)?.map(|v| v as usize),
     })
@@ -199,6 +200,13 @@ impl TileableSession {
                 read_tileable_options(&options)?,
             )?,
         })
+    }
+
+    /// The estimated peak memory of this session, in bytes: what the constructor compared with
+    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
+    #[wasm_bindgen(getter, js_name = memoryEstimate)]
+    pub fn memory_estimate(&self) -> f64 {
+        self.session.working_set().bytes() as f64
     }
 
     /// Makes the next stitch: `{ kind: 'stitched' | 'done', done, axis: 'x' | 'y', cut,
@@ -257,7 +265,10 @@ impl TextureBrush {
     /// `new TextureBrush(base, { nu: 1000, k1: 0.5, k2: 0.5, margin: 12, poisson: true })`.
     #[wasm_bindgen(constructor)]
     pub fn new(base: &Exemplar, options: JsValue) -> JsResult<TextureBrush> {
-        let js = OptionsReader::new(&options, &["nu", "k1", "k2", "margin", "poisson"])?;
+        let js = OptionsReader::new(
+            &options,
+            &["nu", "k1", "k2", "margin", "poisson", "memoryBudgetMiB"],
+        )?;
         let d = BrushOptions::default();
         let options = BrushOptions {
             weights: LabellingWeights {
@@ -269,11 +280,19 @@ impl TextureBrush {
                 .integer("margin", 0, 256)?
                 .map_or(d.margin, |v| v as usize),
             poisson: js.boolean("poisson")?.unwrap_or(d.poisson),
+            memory_budget_mib: js.memory_budget()?,
         };
         Ok(TextureBrush {
             design: LocalDeformation::new(base.image(), options)?,
             last: None,
         })
+    }
+
+    /// The estimated peak memory of this session, in bytes: what the constructor compared with
+    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
+    #[wasm_bindgen(getter, js_name = memoryEstimate)]
+    pub fn memory_estimate(&self) -> f64 {
+        self.design.working_set().bytes() as f64
     }
 
     /// One stroke: `mask` has one byte per reference pixel (non-zero where painted); the painted
@@ -381,6 +400,7 @@ const LAYER_KNOWN: &[&str] = &[
     "placement",
     "tolerance",
     "seed",
+    "memoryBudgetMiB",
 ];
 
 fn read_layer_options(value: &JsValue) -> JsResult<LayerOptions> {
@@ -388,6 +408,7 @@ fn read_layer_options(value: &JsValue) -> JsResult<LayerOptions> {
     let d = LayerOptions::default();
     let size = |name| js.integer(name, 1, 8192).map(|v| v.map(|v| v as usize));
     Ok(LayerOptions {
+        memory_budget_mib: js.memory_budget()?,
         output_width: size("outputWidth")?.unwrap_or(d.output_width),
         output_height: size("outputHeight")?.unwrap_or(d.output_height),
         patch_size: js
@@ -442,6 +463,8 @@ impl LayerDesign {
     #[wasm_bindgen(constructor)]
     pub fn new(options: JsValue) -> JsResult<LayerDesign> {
         let options = read_layer_options(&options)?;
+        // The options and the output's memory budget first, before the layout is allocated.
+        options.validate()?;
         // Validate now, with a stand-in layer, so that bad options fail here.
         let probe = Image::new(options.patch_size, options.patch_size, 3)?;
         let layout = vec![0u8; options.output_width * options.output_height];
@@ -462,6 +485,25 @@ impl LayerDesign {
     }
 
     /// Adds a layer; returns its index. `deformations` as in `deformTexture`. Starts over.
+    /// The estimated peak memory of this session, in bytes: what the constructor compared with
+    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
+    #[wasm_bindgen(getter, js_name = memoryEstimate)]
+    pub fn memory_estimate(&self) -> f64 {
+        let (w, h) = (self.options.output_width, self.options.output_height);
+        let dims: Vec<(usize, usize)> = self
+            .layers
+            .iter()
+            .map(|l| (l.texture.width(), l.texture.height()))
+            .collect();
+        let c = self.layers.iter().map(|l| l.texture.channels()).max();
+        crate::methods::design::memory::layers_working_set(
+            (w, h, c.unwrap_or(4)),
+            self.options.patch_size,
+            &dims,
+        )
+        .bytes() as f64
+    }
+
     #[wasm_bindgen(js_name = addLayer)]
     pub fn add_layer(&mut self, exemplar: &Exemplar, deformations: JsValue) -> JsResult<u32> {
         if self.layers.len() == crate::methods::design::layers::MAX_LAYERS {

@@ -154,6 +154,7 @@ const KNOWN: &[&str] = &[
     "alpha",
     "seed",
     "featureMask",
+    "memoryBudgetMiB",
 ];
 
 fn read_options(value: &JsValue) -> JsResult<FeatureOptions> {
@@ -193,6 +194,7 @@ fn read_options(value: &JsValue) -> JsResult<FeatureOptions> {
         })?,
     };
     Ok(FeatureOptions {
+        memory_budget_mib: js.memory_budget()?,
         placement,
         seam_feature_weight: js
             .number("seamFeatureWeight")?
@@ -317,6 +319,13 @@ impl FeatureSynthesis {
             ("warp", warp.into()),
             ("colourOnly", e.colour_only.into()),
         ]))
+    }
+
+    /// The estimated peak memory of this session, in bytes: what the constructor compared with
+    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
+    #[wasm_bindgen(getter, js_name = memoryEstimate)]
+    pub fn memory_estimate(&self) -> f64 {
+        self.synthesis.working_set().bytes() as f64
     }
 
     #[wasm_bindgen(getter)]

@@ -29,6 +29,7 @@ const KNOWN: &[&str] = &[
     "tileable",
     "flow",
     "histogramMatching",
+    "memoryBudgetMiB",
 ];
 
 const COMPONENT_KEYS: &[&str] = &[
@@ -144,6 +145,7 @@ fn read_options(value: &JsValue) -> JsResult<(FlowOptions, FlowSource)> {
         })?,
     };
     let options = FlowOptions {
+        memory_budget_mib: js.memory_budget()?,
         output_width: js
             .integer("outputWidth", 1, 1 << 20)?
             .map_or(d.output_width, |v| v as usize),
@@ -240,6 +242,13 @@ impl FlowAnimation {
     /// totalIterations }`; after a `frame` (or `done`) event, `renderInto` gives that frame.
     pub fn step(&mut self) -> JsResult<JsValue> {
         Ok(event_object(&self.session.step()?))
+    }
+
+    /// The estimated peak memory of this session, in bytes: what the constructor compared with
+    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
+    #[wasm_bindgen(getter, js_name = memoryEstimate)]
+    pub fn memory_estimate(&self) -> f64 {
+        self.session.working_set().bytes() as f64
     }
 
     #[wasm_bindgen(getter)]

@@ -29,6 +29,7 @@ const KNOWN: &[&str] = &[
     "scales",
     "perspective",
     "tileable",
+    "memoryBudgetMiB",
 ];
 
 fn read_options(value: &JsValue) -> JsResult<Options> {
@@ -62,6 +63,7 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
         }
     }
     Ok(Options {
+        memory_budget_mib: js.memory_budget()?,
         output_width: js
             .integer("outputWidth", 1, 1 << 20)?
             .map_or(d.output_width, |v| v as usize),
@@ -155,6 +157,13 @@ impl GraphcutTextures {
     /// totalSeamCost, patchesPlaced }`.
     pub fn step(&mut self) -> JsResult<JsValue> {
         Ok(event_object(&self.session.step()?))
+    }
+
+    /// The estimated peak memory of this session, in bytes: what the constructor compared with
+    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
+    #[wasm_bindgen(getter, js_name = memoryEstimate)]
+    pub fn memory_estimate(&self) -> f64 {
+        self.session.synthesis().working_set().bytes() as f64
     }
 
     #[wasm_bindgen(getter)]

@@ -31,6 +31,7 @@ const KNOWN: &[&str] = &[
     "histogramMatching",
     "energy",
     "waveletDetailWeight",
+    "memoryBudgetMiB",
 ];
 
 /// Reads the options object; absent keys keep the defaults of [`Options`].
@@ -52,6 +53,7 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
         })?,
     };
     Ok(Options {
+        memory_budget_mib: js.memory_budget()?,
         energy,
         wavelet_detail_weight: js
             .number("waveletDetailWeight")?
@@ -156,6 +158,15 @@ impl TextureOptimization {
     /// with the wavelet term, equal to energy for 'pixels').
     pub fn step(&mut self) -> JsResult<JsValue> {
         Ok(event_object(&self.session.step()?))
+    }
+
+    /// The estimated peak memory of this session, in bytes: what the constructor compared with
+    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
+    #[wasm_bindgen(getter, js_name = memoryEstimate)]
+    pub fn memory_estimate(&self) -> f64 {
+        self.session
+            .working_set(self.session.constraints().is_some())
+            .bytes() as f64
     }
 
     #[wasm_bindgen(getter)]

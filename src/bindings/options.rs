@@ -6,6 +6,9 @@ use wasm_bindgen::{JsCast, JsValue};
 
 use super::error::JsResult;
 use crate::core::Error;
+use crate::core::budget::{
+    DEFAULT_MEMORY_BUDGET_MIB, MAX_MEMORY_BUDGET_MIB, MIN_MEMORY_BUDGET_MIB,
+};
 
 /// An options object whose keys have been checked against the known ones.
 pub struct OptionsReader {
@@ -159,4 +162,26 @@ pub fn object(entries: &[(&str, JsValue)]) -> JsValue {
         Reflect::set(&obj, &(*key).into(), value).expect("setting a property of a fresh object");
     }
     obj.into()
+}
+
+impl OptionsReader {
+    /// `memoryBudgetMiB`: the session's memory budget in MiB (a finite number from
+    /// [`MIN_MEMORY_BUDGET_MIB`] to [`MAX_MEMORY_BUDGET_MIB`], rounded down), or the default
+    /// [`DEFAULT_MEMORY_BUDGET_MIB`] when absent. See [`crate::core::budget`].
+    pub fn memory_budget(&self) -> JsResult<usize> {
+        const NAME: &str = "memoryBudgetMiB";
+        match self.number(NAME)? {
+            None => Ok(DEFAULT_MEMORY_BUDGET_MIB),
+            Some(n) if n >= MIN_MEMORY_BUDGET_MIB as f64 && n <= MAX_MEMORY_BUDGET_MIB as f64 => {
+                Ok(n as usize)
+            }
+            Some(n) => Err(invalid(
+                NAME,
+                format!(
+                    "must be a number of MiB from {MIN_MEMORY_BUDGET_MIB} to \
+                     {MAX_MEMORY_BUDGET_MIB}, got {n}"
+                ),
+            )),
+        }
+    }
 }

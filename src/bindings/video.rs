@@ -61,6 +61,7 @@ const KNOWN: &[&str] = &[
     "k",
     "refinementPatches",
     "gradientCost",
+    "memoryBudgetMiB",
 ];
 
 fn read_options(value: &JsValue) -> JsResult<Options> {
@@ -93,6 +94,7 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
         v => v.map_or(d.k, |v| v as f32),
     };
     Ok(Options {
+        memory_budget_mib: js.memory_budget()?,
         mode,
         output_width: size("outputWidth")?,
         output_height: size("outputHeight")?,
@@ -147,7 +149,7 @@ impl VideoTextures {
     /// (twice the clip's for 'offsets', the clip's for 'extend'; not for 'loop'), `fixedFrames`
     /// (10; 0 = no loop), `transitionWindow` (60), `placement` ('random' | 'matching'), `seed`
     /// (1), `k` (0.01), `refinementPatches` (2), `gradientCost` (false). Unknown keys, bad values
-    /// and videos beyond the 256 MiB budget throw.
+    /// and videos beyond the memory budget (`memoryBudgetMiB`, default 1024 MiB) throw.
     #[wasm_bindgen(constructor)]
     pub fn new(clip: &VideoClip, options: JsValue) -> JsResult<VideoTextures> {
         let options = read_options(&options)?;

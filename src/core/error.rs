@@ -31,6 +31,9 @@ pub enum Error {
     InvalidParameter { name: &'static str, reason: String },
     /// An option name that the method does not know.
     UnknownOption(String),
+    /// A session whose estimated working set exceeds its memory budget (see
+    /// [`crate::core::budget`]); the message names the size, the estimate and the limit.
+    MemoryBudget(String),
 }
 
 /// The largest side an image may have, in pixels. A decoded image of this size already needs
@@ -68,6 +71,7 @@ impl fmt::Display for Error {
             }
             Error::InvalidParameter { name, reason } => write!(f, "invalid {name}: {reason}"),
             Error::UnknownOption(name) => write!(f, "unknown option '{name}'"),
+            Error::MemoryBudget(msg) => write!(f, "{msg}"),
         }
     }
 }

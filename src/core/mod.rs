@@ -1,6 +1,8 @@
 //! Layer 1: image buffers, decoding and encoding, resampling, pyramids, gradients, the seeded RNG
-//! and the error type. Plain Rust with no JavaScript in sight.
+//! and the error type, the memory budget and a clock. Plain Rust with no JavaScript in sight (the
+//! clock reads JavaScript's `Date` in wasm, where `std::time` has none).
 
+pub mod budget;
 pub mod clock;
 pub mod codec;
 pub mod error;

@@ -152,3 +152,26 @@ fn flat_rgba(ex: &Exemplar, pixels: usize) -> Vec<u8> {
     let n = (rgba.len() / 4) as u64;
     sums.map(|sum| (sum / n) as u8).repeat(pixels)
 }
+
+#[wasm_bindgen_test]
+fn a_huge_output_is_refused_by_the_constructor_naming_the_budget() {
+    let ex = Exemplar::from_bytes(include_bytes!("../../www/samples/gravel_64.png")).unwrap();
+    let msg = error_message(GraphcutTextures::new(
+        &ex,
+        options(&[
+            ("outputWidth", 4096.into()),
+            ("outputHeight", 4096.into()),
+            ("memoryBudgetMiB", 64.into()),
+        ]),
+    ));
+    assert!(
+        msg.starts_with("output 4096x4096: graph-cut synthesis needs about")
+            && msg.contains("memory budget of 64 MiB"),
+        "{msg}"
+    );
+    let msg = error_message(GraphcutTextures::new(
+        &ex,
+        options(&[("memoryBudgetMiB", f64::NAN.into())]),
+    ));
+    assert!(msg.starts_with("invalid memoryBudgetMiB"), "{msg}");
+}

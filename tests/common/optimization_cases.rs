@@ -170,3 +170,44 @@ fn wavelet_energies_run_from_js_and_bad_values_are_named() {
     ]);
     assert!(odd.contains("invalid neighbourhoodSizes"), "{odd}");
 }
+
+#[wasm_bindgen_test]
+fn a_huge_output_is_refused_by_the_constructor_naming_the_budget() {
+    // An RGB exemplar (gravel_64 is grey: a third of the colour buffers, under 1024 MiB).
+    let ex = Exemplar::from_bytes(include_bytes!("../../www/samples/tiles_64.png")).unwrap();
+    let huge = |budget: Option<JsValue>| {
+        let mut entries = vec![("outputWidth", 4096.into()), ("outputHeight", 4096.into())];
+        if let Some(b) = budget {
+            entries.push(("memoryBudgetMiB", b));
+        }
+        error_message(TextureOptimization::new(&ex, options(&entries)))
+    };
+    let msg = huge(None);
+    assert!(
+        msg.starts_with("output 4096x4096: texture optimisation needs about")
+            && msg.contains("memory budget of 1024 MiB")
+            && msg.contains("memoryBudgetMiB"),
+        "{msg}"
+    );
+    assert!(huge(Some(256.into())).contains("memory budget of 256 MiB"));
+    for bad in [
+        JsValue::from(f64::NAN),
+        8.into(),
+        4096.into(),
+        "1024".into(),
+    ] {
+        let msg = huge(Some(bad));
+        assert!(msg.starts_with("invalid memoryBudgetMiB"), "{msg}");
+    }
+    // Under the budget: constructing only (the estimate is read, nothing is run).
+    let session = TextureOptimization::new(
+        &ex,
+        options(&[
+            ("outputWidth", 2048.into()),
+            ("outputHeight", 2048.into()),
+            ("memoryBudgetMiB", 2048.into()),
+        ]),
+    )
+    .unwrap();
+    assert!(session.memory_estimate() > 64.0 * 1048576.0);
+}

@@ -22,6 +22,9 @@ pub struct BrushOptions {
     pub margin: usize,
     /// Gradient-domain paste (true) or the plain cut-and-paste of the labelling. Default: true.
     pub poisson: bool,
+    /// The memory budget in MiB (see [`crate::core::budget`]): a base whose working set would
+    /// exceed it is refused. Default: 1024.
+    pub memory_budget_mib: usize,
 }
 
 impl Default for BrushOptions {
@@ -30,6 +33,7 @@ impl Default for BrushOptions {
             weights: LabellingWeights::default(),
             margin: 12,
             poisson: true,
+            memory_budget_mib: crate::core::budget::DEFAULT_MEMORY_BUDGET_MIB,
         }
     }
 }
@@ -85,12 +89,26 @@ pub struct LocalDeformation {
 impl LocalDeformation {
     pub fn new(base: &Image, options: BrushOptions) -> Result<Self> {
         options.validate()?;
+        crate::core::budget::validate_budget(options.memory_budget_mib)?;
+        let (w, h) = (base.width(), base.height());
+        super::memory::brush_working_set((w, h, base.channels())).check(
+            &format!("base {w}x{h}"),
+            super::memory::BRUSH,
+            options.memory_budget_mib,
+        )?;
         Ok(LocalDeformation {
             base: base.clone(),
             options,
             history: Vec::new(),
             graph: Graph::new(1)?,
         })
+    }
+
+    /// The estimated working set (see [`super::memory`]).
+    #[must_use]
+    pub fn working_set(&self) -> crate::core::budget::WorkingSet {
+        let b = &self.base;
+        super::memory::brush_working_set((b.width(), b.height(), b.channels()))
     }
 
     /// The base as it is now.

@@ -9,6 +9,7 @@ pub mod deform;
 pub mod labelling;
 pub mod layers;
 pub mod local;
+pub mod memory;
 pub mod poisson_paste;
 
 pub use deform::{Deformation, DeformationRanges, Steps, deform};

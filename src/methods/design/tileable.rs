@@ -20,6 +20,8 @@ pub struct TileableOptions {
     pub overlap_x: Option<usize>,
     /// m_v: rows the halves overlap. Default (None): a sixth of the height, at most 64.
     pub overlap_y: Option<usize>,
+    /// The memory budget in MiB (see [`crate::core::budget`]); `None`: the default, 1024.
+    pub memory_budget_mib: Option<usize>,
 }
 
 /// The smallest side that can be made tileable.
@@ -91,9 +93,22 @@ impl TileableSession {
                 reason: format!("each side must be at least {MIN_SIDE} pixels"),
             });
         }
+        let (m_h, m_v) = (
+            overlap(w, options.overlap_x, "overlapX")?,
+            overlap(h, options.overlap_y, "overlapY")?,
+        );
+        let budget = options
+            .memory_budget_mib
+            .unwrap_or(crate::core::budget::DEFAULT_MEMORY_BUDGET_MIB);
+        crate::core::budget::validate_budget(budget)?;
+        super::memory::tileable_working_set((w, h, image.channels()), (m_h, m_v)).check(
+            &format!("image {w}x{h}"),
+            super::memory::TILEABLE,
+            budget,
+        )?;
         Ok(TileableSession {
-            m_h: overlap(w, options.overlap_x, "overlapX")?,
-            m_v: overlap(h, options.overlap_y, "overlapY")?,
+            m_h,
+            m_v,
             input: image.clone(),
             graph: Graph::new(1)?,
             horizontal: None,
@@ -104,6 +119,16 @@ impl TileableSession {
     #[must_use]
     pub fn is_done(&self) -> bool {
         self.result.is_some()
+    }
+
+    /// The estimated working set (see [`super::memory`]).
+    #[must_use]
+    pub fn working_set(&self) -> crate::core::budget::WorkingSet {
+        let i = &self.input;
+        super::memory::tileable_working_set(
+            (i.width(), i.height(), i.channels()),
+            (self.m_h, self.m_v),
+        )
     }
 
     /// The image as far as it is made: the input, then horizontally stitched, then the result.
@@ -341,6 +366,7 @@ mod tests {
             TileableOptions {
                 overlap_x: Some(5),
                 overlap_y: Some(4),
+                memory_budget_mib: None,
             },
         )
         .unwrap();
@@ -394,6 +420,7 @@ mod tests {
             TileableOptions {
                 overlap_x: Some(30),
                 overlap_y: None,
+                memory_budget_mib: None,
             },
         )
         .unwrap_err()

@@ -7,6 +7,7 @@ pub mod alignment;
 pub mod bilateral;
 pub mod detect;
 pub mod matching;
+pub mod memory;
 pub mod thinning;
 
 pub use detect::{DetectOptions, FeatureKind, FeatureMap, detect};

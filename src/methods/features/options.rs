@@ -73,6 +73,9 @@ pub struct FeatureOptions {
     pub extra_inputs: Vec<Deformation>,
     pub detect: DetectOptions,
     pub seed: u64,
+    /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses an
+    /// output whose working set would exceed it. Default: 1024.
+    pub memory_budget_mib: usize,
 }
 
 impl FeatureOptions {
@@ -102,6 +105,7 @@ impl Default for FeatureOptions {
             extra_inputs: Vec::new(),
             detect: DetectOptions::default(),
             seed: 1,
+            memory_budget_mib: crate::core::budget::DEFAULT_MEMORY_BUDGET_MIB,
         }
     }
 }
@@ -114,6 +118,7 @@ impl FeatureOptions {
 
     pub(super) fn validate(&self, ew: usize, eh: usize) -> Result<()> {
         check_size("output", self.output_width, self.output_height)?;
+        crate::core::budget::validate_budget(self.memory_budget_mib)?;
         if !(16..=128).contains(&self.patch_size) {
             return Err(Error::InvalidParameter {
                 name: "patchSize",

@@ -12,11 +12,13 @@ use super::detect::DetectOptions;
 use super::detect::{FeatureMap, detect};
 use super::hybrid::{GraphcutFeatures, HybridOptions, canvas_features};
 use super::matching::{ContextFeature, FeatureIndex, Region, TAU_MATCH};
+use super::memory::{METHOD, working_set};
 use super::options::{FeatureOptions, FeaturePlacement};
 use crate::core::sample::sample_bicubic;
 use crate::core::{Edge, Error, Image, Result, Rng};
 use crate::methods::graphcut::Options as GraphcutOptions;
 use crate::methods::graphcut::overlap::{ScanWindow, scan_origins};
+use crate::methods::graphcut::synthesis::estimate as graphcut_estimate;
 use crate::solvers::fft_ssd::{Boundary, SsdSearch};
 use crate::solvers::maxflow::Graph;
 
@@ -121,6 +123,29 @@ impl FeatureSynthesis {
             });
         }
         let (w, h) = (options.output_width, options.output_height);
+        // The budget is checked before anything of the output's size is allocated.
+        let graphcut_options = GraphcutOptions {
+            output_width: w,
+            output_height: h,
+            seed: options.seed,
+            memory_budget_mib: options.memory_budget_mib,
+            ..GraphcutOptions::default()
+        };
+        let dims: Vec<(usize, usize)> = inputs
+            .iter()
+            .map(|i| (i.image.width(), i.image.height()))
+            .collect();
+        let mut set = working_set(&options, &dims, exemplar.channels());
+        if options.placement == FeaturePlacement::Graphcut {
+            for (what, bytes) in graphcut_estimate(exemplar, &graphcut_options)?.parts() {
+                set.add(what, *bytes);
+            }
+        }
+        set.check(
+            &format!("output {w}x{h}"),
+            METHOD,
+            options.memory_budget_mib,
+        )?;
         let graphcut = if options.placement == FeaturePlacement::Graphcut {
             let extra = inputs.iter().skip(1).map(|i| i.image.clone()).collect();
             let maps = inputs.iter().map(|i| i.map.clone()).collect();
@@ -128,12 +153,7 @@ impl FeatureSynthesis {
                 exemplar,
                 maps,
                 extra,
-                GraphcutOptions {
-                    output_width: w,
-                    output_height: h,
-                    seed: options.seed,
-                    ..GraphcutOptions::default()
-                },
+                graphcut_options,
                 HybridOptions {
                     feature_weight: options.feature_weight,
                     candidates: options.candidates(),
@@ -166,6 +186,23 @@ impl FeatureSynthesis {
             inputs,
             options,
         })
+    }
+
+    /// The estimated working set (see [`super::memory`]).
+    #[must_use]
+    pub fn working_set(&self) -> crate::core::budget::WorkingSet {
+        let dims: Vec<(usize, usize)> = self
+            .inputs
+            .iter()
+            .map(|i| (i.image.width(), i.image.height()))
+            .collect();
+        let mut set = working_set(&self.options, &dims, self.output.channels());
+        if let Some(g) = &self.graphcut {
+            for (what, bytes) in g.session.synthesis().working_set().parts() {
+                set.add(what, *bytes);
+            }
+        }
+        set
     }
 
     #[must_use]

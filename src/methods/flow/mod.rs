@@ -4,6 +4,7 @@
 
 pub mod field;
 pub mod generators;
+pub mod memory;
 pub mod options;
 pub mod session;
 pub mod warp;

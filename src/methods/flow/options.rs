@@ -57,6 +57,9 @@ pub struct FlowOptions {
     /// texture, and contrast drains away frame after frame (tiles_128, vortex, 256x256: the
     /// flat fraction of frames 30-60 was 3.8x frame 1's). Default: 1.
     pub histogram_matching: f32,
+    /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses a frame
+    /// size whose working set would exceed it. Default: 1024.
+    pub memory_budget_mib: usize,
 }
 
 impl Default for FlowOptions {
@@ -73,6 +76,7 @@ impl Default for FlowOptions {
             r: 0.8,
             tileable: false,
             histogram_matching: 1.0,
+            memory_budget_mib: crate::core::budget::DEFAULT_MEMORY_BUDGET_MIB,
         }
     }
 }
@@ -92,6 +96,7 @@ impl FlowOptions {
             r: self.r,
             tileable: self.tileable,
             histogram_matching: self.histogram_matching,
+            memory_budget_mib: self.memory_budget_mib,
             ..optimization::Options::default()
         }
     }

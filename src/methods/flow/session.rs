@@ -4,6 +4,7 @@
 //! Algorithm 2, the matches moved along the flow from the previous frame's.
 
 use super::field::FlowField;
+use super::memory::{METHOD, frames_working_set};
 use super::options::{FlowOptions, FlowSource};
 use super::warp::warp;
 use crate::core::{Edge, Error, Image, Result, Rng};
@@ -107,6 +108,18 @@ impl FlowSession {
                 });
             }
         }
+        // The budget is checked before anything of the output's size is allocated: frame 0's
+        // synthesis checks its own, the later frames' is checked here.
+        let fields = match &flow {
+            FlowSource::Fields(f) => f.len(),
+            FlowSource::Generator(_) => 0,
+        };
+        let (w, h) = (options.output_width, options.output_height);
+        frames_working_set(&options, exemplar.channels(), fields).check(
+            &format!("frames {w}x{h}"),
+            METHOD,
+            options.memory_budget_mib,
+        )?;
         let first = optimization::Session::new(exemplar, options.first_frame())?;
         let mut sizes = options.frame_sizes.clone();
         sizes.sort_unstable_by(|a, b| b.cmp(a));
@@ -155,6 +168,31 @@ impl FlowSession {
             total_iterations: 0,
             last: None,
         })
+    }
+
+    /// The estimated working set: the larger of frame 0's synthesis and the later frames'
+    /// (see [`super::memory`]).
+    #[must_use]
+    pub fn working_set(&self) -> crate::core::budget::WorkingSet {
+        let fields = match &self.flow {
+            FlowSource::Fields(f) => f.len(),
+            FlowSource::Generator(_) => 0,
+        };
+        let frames = frames_working_set(&self.options, self.exemplar.channels(), fields);
+        let e = &self.exemplar;
+        let opts = self.options.first_frame();
+        let first = optimization::schedule::plan(e.width(), e.height(), &opts).map(|levels| {
+            optimization::memory::working_set(
+                &opts,
+                &levels,
+                (e.width(), e.height(), e.channels()),
+                false,
+            )
+        });
+        match first {
+            Ok(first) if first.bytes() > frames.bytes() => first,
+            _ => frames,
+        }
     }
 
     #[must_use]

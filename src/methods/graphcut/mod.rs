@@ -6,6 +6,7 @@
 pub mod blend;
 pub mod canvas;
 pub mod cost;
+pub mod memory;
 pub mod merge;
 pub mod options;
 pub mod overlap;

@@ -109,6 +109,9 @@ pub struct Options {
     pub transforms: Transforms,
     /// Periodic output: costs and overlaps wrap around, so the result tiles. Default: false.
     pub tileable: bool,
+    /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses an
+    /// output whose working set would exceed it. Default: 1024.
+    pub memory_budget_mib: usize,
 }
 
 impl Default for Options {
@@ -125,6 +128,7 @@ impl Default for Options {
             blend: Blend::None,
             transforms: Transforms::default(),
             tileable: false,
+            memory_budget_mib: crate::core::budget::DEFAULT_MEMORY_BUDGET_MIB,
         }
     }
 }
@@ -138,6 +142,7 @@ impl Options {
         let invalid =
             |name: &'static str, reason: String| Err(Error::InvalidParameter { name, reason });
         check_size("output", self.output_width, self.output_height)?;
+        crate::core::budget::validate_budget(self.memory_budget_mib)?;
         if exemplar_width < MIN_EXEMPLAR_SIDE || exemplar_height < MIN_EXEMPLAR_SIDE {
             return Err(Error::InvalidSize {
                 what: "exemplar",

@@ -3,7 +3,8 @@
 //! with probability exp(-C / (k sigma^2)) (eq. 3). Costs come from the FFT SSD search (section 5).
 
 use super::canvas::{Patch, UNCOVERED};
-use super::options::Placement;
+use super::options::{Options, Placement};
+use super::source::Source;
 use super::synthesis::Synthesis;
 use crate::core::{Error, Image, Result};
 use crate::solvers::fft_ssd::{Boundary, MAX_TRANSFORM_VALUES, transform_size};
@@ -60,39 +61,33 @@ impl Synthesis {
     /// Refuses, before any step, an exemplar whose search window would need a transform larger
     /// than the FFT search allows (a camera photo used whole: every patch is the whole source).
     pub fn check_search_size(&self) -> Result<()> {
-        if self.options.placement == Placement::Random {
-            return Ok(());
-        }
-        let side = self
-            .options
-            .error_region_side(self.sources[0].width(), self.sources[0].height());
-        let (w, h) = (self.canvas.width, self.canvas.height);
-        // The window is largest where the border does not clip it: the region in the middle.
-        let region = Region {
-            x: w.saturating_sub(side) / 2,
-            y: h.saturating_sub(side) / 2,
-            width: side,
-            height: side,
-        };
-        for s in 0..self.sources.len() {
-            let (pw, ph) = self.patch_extent(s);
-            let window = SearchWindow::around(region, (pw, ph), (w, h), self.canvas.wrap);
-            let (nx, ny) = transform_size((window.width, window.height), (pw, ph), window.boundary);
-            if nx.saturating_mul(ny) > MAX_TRANSFORM_VALUES {
-                let source = &self.sources[s];
-                return Err(Error::InvalidSize {
-                    what: "exemplar",
-                    width: source.width(),
-                    height: source.height(),
-                    reason: format!(
-                        "graph-cut matching would search a {nx}x{ny} transform, more than the \
-                         {MAX_TRANSFORM_VALUES} values allowed; shrink it first (e.g. \
-                         exemplar.resized(512)) or use placement 'random'"
-                    ),
-                });
-            }
+        if let Some((s, nx, ny)) = self.largest_search()
+            && nx.saturating_mul(ny) > MAX_TRANSFORM_VALUES
+        {
+            let source = &self.sources[s];
+            return Err(Error::InvalidSize {
+                what: "exemplar",
+                width: source.width(),
+                height: source.height(),
+                reason: format!(
+                    "graph-cut matching would search a {nx}x{ny} transform, more than the \
+                     {MAX_TRANSFORM_VALUES} values allowed; shrink it first (e.g. \
+                     exemplar.resized(512)) or use placement 'random'"
+                ),
+            });
         }
         Ok(())
+    }
+
+    /// The largest FFT search a placement makes: (source, transform width, height), or `None`
+    /// for random placement, which searches nothing.
+    #[must_use]
+    pub fn largest_search(&self) -> Option<(usize, usize, usize)> {
+        largest_search(
+            &self.options,
+            &self.sources,
+            (self.canvas.width, self.canvas.height, self.canvas.wrap),
+        )
     }
 
     /// Every unused offset of every allowed source whose patch covers `region` entirely.
@@ -138,15 +133,10 @@ impl Synthesis {
     /// (a larger patch would overlap itself).
     #[must_use]
     pub fn patch_extent(&self, s: usize) -> (usize, usize) {
-        let source = &self.sources[s];
-        if self.canvas.wrap {
-            (
-                source.width().min(self.canvas.width),
-                source.height().min(self.canvas.height),
-            )
-        } else {
-            (source.width(), source.height())
-        }
+        patch_extent(
+            &self.sources[s],
+            (self.canvas.width, self.canvas.height, self.canvas.wrap),
+        )
     }
 
     /// With perspective on, each band of output rows takes only the source whose scale belongs
@@ -474,4 +464,44 @@ mod tests {
         assert!(!region_contains(r, 0, 1, 6, 5, false));
         assert!(region_contains(r, 5, 0, 6, 5, false));
     }
+}
+
+/// The extent of a patch of `source` on a `(width, height, wrap)` canvas (a periodic canvas
+/// clips it to its own size).
+#[must_use]
+pub fn patch_extent(source: &Source, (w, h, wrap): (usize, usize, bool)) -> (usize, usize) {
+    if wrap {
+        (source.width().min(w), source.height().min(h))
+    } else {
+        (source.width(), source.height())
+    }
+}
+
+/// The largest FFT search a placement on a `(width, height, wrap)` canvas makes: (source,
+/// transform width, height), or `None` for random placement, which searches nothing.
+#[must_use]
+pub fn largest_search(
+    options: &Options,
+    sources: &[Source],
+    (w, h, wrap): (usize, usize, bool),
+) -> Option<(usize, usize, usize)> {
+    if options.placement == Placement::Random {
+        return None;
+    }
+    let side = options.error_region_side(sources[0].width(), sources[0].height());
+    // The window is largest where the border does not clip it: the region in the middle.
+    let region = Region {
+        x: w.saturating_sub(side) / 2,
+        y: h.saturating_sub(side) / 2,
+        width: side,
+        height: side,
+    };
+    (0..sources.len())
+        .map(|s| {
+            let (pw, ph) = patch_extent(&sources[s], (w, h, wrap));
+            let window = SearchWindow::around(region, (pw, ph), (w, h), wrap);
+            let (nx, ny) = transform_size((window.width, window.height), (pw, ph), window.boundary);
+            (s, nx, ny)
+        })
+        .max_by_key(|&(_, nx, ny)| nx.saturating_mul(ny))
 }

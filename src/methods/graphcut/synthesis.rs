@@ -33,6 +33,13 @@ impl Synthesis {
     pub fn new(exemplar: &Image, options: Options) -> Result<Synthesis> {
         options.validate(exemplar.width(), exemplar.height())?;
         let sources = build_sources(exemplar, &options.transforms)?;
+        // The budget is checked before the canvas, the largest buffer, is allocated.
+        let (w, h) = (options.output_width, options.output_height);
+        working_set(&options, &sources, exemplar.channels()).check(
+            &format!("output {w}x{h}"),
+            super::memory::METHOD,
+            options.memory_budget_mib,
+        )?;
         let canvas = Canvas::new(
             options.output_width,
             options.output_height,
@@ -52,6 +59,12 @@ impl Synthesis {
         };
         synthesis.check_search_size()?;
         Ok(synthesis)
+    }
+
+    /// The estimated working set of the synthesis (see [`super::memory`]).
+    #[must_use]
+    pub fn working_set(&self) -> crate::core::budget::WorkingSet {
+        working_set(&self.options, &self.sources, self.canvas.pixels.channels())
     }
 
     /// What patch `patch` shows at output pixel `i`, with its gradient across a horizontal edge
@@ -155,4 +168,42 @@ impl Synthesis {
         }
         pixels
     }
+}
+
+/// The working set of a synthesis with `options` over `sources` (see [`super::memory`]).
+fn working_set(
+    options: &Options,
+    sources: &[Source],
+    channels: usize,
+) -> crate::core::budget::WorkingSet {
+    let canvas = (
+        options.output_width,
+        options.output_height,
+        options.tileable,
+    );
+    let patch = sources
+        .iter()
+        .map(|s| {
+            let (w, h) = super::placement::patch_extent(s, canvas);
+            w * h
+        })
+        .max()
+        .unwrap_or(0);
+    let search = super::placement::largest_search(options, sources, canvas)
+        .map_or(0, |(_, nx, ny)| nx.saturating_mul(ny));
+    let dims: Vec<(usize, usize)> = sources.iter().map(|s| (s.width(), s.height())).collect();
+    super::memory::working_set(
+        (options.output_width, options.output_height, channels),
+        &dims,
+        patch,
+        search,
+        options.blend,
+    )
+}
+
+/// The working set a synthesis of `exemplar` with `options` would have, without allocating
+/// anything of the output's size (the sources are built: they are the exemplar's size).
+pub fn estimate(exemplar: &Image, options: &Options) -> Result<crate::core::budget::WorkingSet> {
+    let sources = build_sources(exemplar, &options.transforms)?;
+    Ok(working_set(options, &sources, exemplar.channels()))
 }

@@ -10,6 +10,7 @@ pub mod histogram;
 pub mod initial;
 pub mod level;
 pub mod m_step;
+pub mod memory;
 pub mod occurrence;
 pub mod options;
 pub mod queries;

@@ -1,5 +1,6 @@
 //! The options of texture optimisation, with the paper's values as defaults.
 
+use crate::core::budget::{DEFAULT_MEMORY_BUDGET_MIB, validate_budget};
 use crate::core::{Error, Result, error::check_size};
 use crate::solvers::nn::Search;
 
@@ -53,6 +54,9 @@ pub struct Options {
     /// pixel distance (Parseval) and changes no match; w > 1 stresses multi-scale edges over
     /// mean colour. Ignored with the pixel energy. Default: [`DEFAULT_DETAIL_WEIGHT`].
     pub wavelet_detail_weight: f32,
+    /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses an
+    /// output whose working set would exceed it. Default: 1024.
+    pub memory_budget_mib: usize,
 }
 
 impl Default for Options {
@@ -72,6 +76,7 @@ impl Default for Options {
             histogram_matching: 1.0,
             energy: Energy::Pixels,
             wavelet_detail_weight: DEFAULT_DETAIL_WEIGHT,
+            memory_budget_mib: DEFAULT_MEMORY_BUDGET_MIB,
         }
     }
 }
@@ -93,6 +98,7 @@ impl Options {
         let invalid =
             |name: &'static str, reason: String| Err(Error::InvalidParameter { name, reason });
         check_size("output", self.output_width, self.output_height)?;
+        validate_budget(self.memory_budget_mib)?;
         if exemplar_width < MIN_EXEMPLAR_SIDE || exemplar_height < MIN_EXEMPLAR_SIDE {
             return Err(Error::InvalidSize {
                 what: "exemplar",

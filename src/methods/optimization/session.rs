@@ -6,6 +6,7 @@ use super::e_step::edge;
 use super::initial::random_patches;
 use super::level::{LevelSetup, LevelSolver, fit_output};
 use super::m_step::PATCHMATCH_PASSES;
+use super::memory::{METHOD, working_set};
 use super::options::{Energy, Options};
 use super::schedule::{Level, plan};
 use crate::core::pyramid::gaussian_pyramid;
@@ -110,43 +111,6 @@ pub struct EnergyPoint {
     pub energy: f64,
 }
 
-/// Most bytes the transformed exemplar neighbourhoods of one level may take with a wavelet
-/// energy (they are stored, one vector per neighbourhood: 116 MB for a 128x128 RGB exemplar at
-/// 32x32, 620 MB at 256x256).
-pub const MAX_WAVELET_BYTES: usize = 512 << 20;
-
-/// Refuses a schedule whose transformed exemplar neighbourhoods would not fit
-/// [`MAX_WAVELET_BYTES`].
-fn check_wavelet_memory(levels: &[Level], options: &Options, channels: usize) -> Result<()> {
-    let dims = if options.mu > 0.0 {
-        3 * channels
-    } else {
-        channels
-    };
-    for lv in levels {
-        let count = (lv.exemplar_width - lv.size + 1) * (lv.exemplar_height - lv.size + 1);
-        let bytes = count * lv.size * lv.size * dims * 4;
-        if bytes > MAX_WAVELET_BYTES {
-            return Err(Error::InvalidParameter {
-                name: "energy",
-                reason: format!(
-                    "energy '{}' stores every exemplar neighbourhood's coefficients: {} MB at \
-                     {}x{} neighbourhoods on a {}x{} exemplar, above the {} MB limit; use a \
-                     smaller exemplar or smaller neighbourhoodSizes",
-                    options.energy.name(),
-                    bytes >> 20,
-                    lv.size,
-                    lv.size,
-                    lv.exemplar_width,
-                    lv.exemplar_height,
-                    MAX_WAVELET_BYTES >> 20
-                ),
-            });
-        }
-    }
-    Ok(())
-}
-
 /// A running texture optimisation.
 pub struct Session {
     options: Options,
@@ -185,9 +149,13 @@ impl Session {
     pub fn new(exemplar: &Image, options: Options) -> Result<Session> {
         options.validate(exemplar.width(), exemplar.height())?;
         let levels = plan(exemplar.width(), exemplar.height(), &options)?;
-        if options.energy != Energy::Pixels {
-            check_wavelet_memory(&levels, &options, exemplar.channels())?;
-        }
+        let dims = (exemplar.width(), exemplar.height(), exemplar.channels());
+        let (w, h) = (options.output_width, options.output_height);
+        working_set(&options, &levels, dims, false).check(
+            &format!("output {w}x{h}"),
+            METHOD,
+            options.memory_budget_mib,
+        )?;
         let octaves = levels.iter().map(|l| l.octave).max().unwrap_or(0) + 1;
         let exemplars = gaussian_pyramid(exemplar, octaves, Edge::Clamp)?;
         Ok(Session {
@@ -251,6 +219,14 @@ impl Session {
                 });
             }
         }
+        if constraints.is_some() {
+            let (w, h) = (self.options.output_width, self.options.output_height);
+            self.working_set(true).check(
+                &format!("output {w}x{h} with soft constraints"),
+                METHOD,
+                self.options.memory_budget_mib,
+            )?;
+        }
         self.constraints = constraints;
         self.constraint = self.level_constraint();
         if self.is_done() && self.entered.is_some() {
@@ -266,6 +242,18 @@ impl Session {
     pub fn set_step_budget(&mut self, milliseconds: Option<f64>, chunk_work: usize) {
         self.split = milliseconds.map(|ms| ms.max(0.0));
         self.chunk_work = chunk_work.max(1);
+    }
+
+    /// The estimated working set (see [`super::memory`]), with or without soft constraints.
+    #[must_use]
+    pub fn working_set(&self, constraints: bool) -> crate::core::budget::WorkingSet {
+        let e = &self.exemplars[0];
+        working_set(
+            &self.options,
+            &self.levels,
+            (e.width(), e.height(), e.channels()),
+            constraints,
+        )
     }
 
     /// Channels of the exemplar (and of the output and of constraint targets).

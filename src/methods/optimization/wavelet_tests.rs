@@ -312,7 +312,7 @@ fn wavelet_energies_refuse_constraints_and_oversized_stores_by_name() {
     .unwrap()
     .to_string();
     assert!(
-        err.contains("invalid energy") && err.contains("MB"),
+        err.contains("exemplar neighbourhoods") && err.contains("memory budget of 1024 MiB"),
         "{err}"
     );
 }

@@ -1,5 +1,6 @@
-//! The memory budget of a video synthesis (issue 14, item 7). A wasm32 instance addresses at most
-//! 4 GiB, and browsers often refuse to grow one far beyond a few hundred MB, so a video whose
+//! The memory budget of a video synthesis (issue 14, item 7; since issue 17 the shared budget of
+//! [`crate::core::budget`], default 1024 MiB, settable with `memory_budget_mib`). A wasm32
+//! instance addresses at most 4 GiB, and browsers often refuse to grow one far, so a video whose
 //! working set would not fit is refused up front, with a message naming the sizes and the limit,
 //! instead of trapping half-way with "out of memory".
 //!
@@ -15,10 +16,13 @@
 //! - the 3-D FFT search of matching placement
 //!   ([`crate::solvers::fft_ssd::volume_search_bytes`]).
 
+use crate::core::budget::{MAX_MEMORY_BUDGET_MIB, WorkingSet as Estimate};
 use crate::core::{Error, Result};
 
-/// The documented budget: 256 MiB for everything a video synthesis allocates.
-pub const MEMORY_BUDGET: usize = 256 << 20;
+/// The most a single volume's colours may take whatever the budget: the largest budget
+/// accepted ([`MAX_MEMORY_BUDGET_MIB`]). A session's own budget is checked by
+/// [`WorkingSet::check`].
+pub const MAX_VOLUME_BYTES: usize = MAX_MEMORY_BUDGET_MIB << 20;
 
 pub const INPUT_BYTES_PER_VOXEL: usize = 24;
 pub const OUTPUT_BYTES_PER_VOXEL: usize = 48;
@@ -29,7 +33,7 @@ pub const GRAPH_BYTES_PER_VOXEL: usize = 256;
 pub const MAX_DIMENSION: usize = 1 << 16;
 
 /// Fails on an empty volume, a side above [`MAX_DIMENSION`], or one whose colours alone
-/// (12 bytes a voxel) exceed the budget.
+/// (12 bytes a voxel) exceed [`MAX_VOLUME_BYTES`].
 pub fn check_volume(what: &'static str, width: usize, height: usize, frames: usize) -> Result<()> {
     let fail = |reason: String| {
         Err(Error::InvalidParameter {
@@ -43,12 +47,12 @@ pub fn check_volume(what: &'static str, width: usize, height: usize, frames: usi
     if width.max(height).max(frames) > MAX_DIMENSION {
         return fail(format!("no dimension may exceed {MAX_DIMENSION}"));
     }
-    let bytes = width * height * frames * 12;
-    if bytes > MEMORY_BUDGET {
+    let bytes = (width * height) as u64 * frames as u64 * 12;
+    if bytes > MAX_VOLUME_BYTES as u64 {
         return fail(format!(
-            "its colours alone take {} MiB, more than the {} MiB memory budget",
-            mib(bytes),
-            mib(MEMORY_BUDGET)
+            "its colours alone take {} MiB, more than the largest memory budget, {} MiB",
+            bytes.div_ceil(1 << 20),
+            MAX_MEMORY_BUDGET_MIB
         ));
     }
     Ok(())
@@ -64,43 +68,37 @@ pub struct WorkingSet {
 }
 
 impl WorkingSet {
+    /// The estimate in the shared form, part by part.
     #[must_use]
-    pub fn bytes(&self) -> usize {
-        self.input_voxels * INPUT_BYTES_PER_VOXEL
-            + self.output_voxels * OUTPUT_BYTES_PER_VOXEL
-            + self.patch_voxels * GRAPH_BYTES_PER_VOXEL
-            + self.search_bytes
+    pub fn estimate(&self) -> Estimate {
+        let b = |voxels: usize, per: usize| voxels as u64 * per as u64;
+        Estimate::new()
+            .with("input", b(self.input_voxels, INPUT_BYTES_PER_VOXEL))
+            .with("output", b(self.output_voxels, OUTPUT_BYTES_PER_VOXEL))
+            .with("seam graph", b(self.patch_voxels, GRAPH_BYTES_PER_VOXEL))
+            .with("FFT search", self.search_bytes as u64)
     }
 
-    /// Fails, naming every size and the limit, when the working set exceeds [`MEMORY_BUDGET`].
-    pub fn check(&self, input: (usize, usize, usize), output: (usize, usize, usize)) -> Result<()> {
-        let bytes = self.bytes();
-        if bytes <= MEMORY_BUDGET {
-            return Ok(());
-        }
-        Err(Error::InvalidParameter {
-            name: "video size",
-            reason: format!(
-                "input {}x{}x{} and output {}x{}x{} (width x height x frames) need about {} MiB \
-                 (input {} MiB, output {} MiB, seam graph {} MiB, FFT search {} MiB), more than \
-                 the {} MiB memory budget; use fewer frames or smaller frames",
-                input.0,
-                input.1,
-                input.2,
-                output.0,
-                output.1,
-                output.2,
-                mib(bytes),
-                mib(self.input_voxels * INPUT_BYTES_PER_VOXEL),
-                mib(self.output_voxels * OUTPUT_BYTES_PER_VOXEL),
-                mib(self.patch_voxels * GRAPH_BYTES_PER_VOXEL),
-                mib(self.search_bytes),
-                mib(MEMORY_BUDGET)
+    #[must_use]
+    pub fn bytes(&self) -> u64 {
+        self.estimate().bytes()
+    }
+
+    /// Fails, naming every size, the estimate and the limit, when the working set exceeds
+    /// `budget_mib`.
+    pub fn check(
+        &self,
+        input: (usize, usize, usize),
+        output: (usize, usize, usize),
+        budget_mib: usize,
+    ) -> Result<()> {
+        self.estimate().check(
+            &format!(
+                "input {}x{}x{} and output {}x{}x{} (width x height x frames)",
+                input.0, input.1, input.2, output.0, output.1, output.2
             ),
-        })
+            "video synthesis",
+            budget_mib,
+        )
     }
-}
-
-fn mib(bytes: usize) -> usize {
-    bytes.div_ceil(1 << 20)
 }

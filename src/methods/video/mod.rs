@@ -27,7 +27,7 @@ pub mod volume;
 #[cfg(test)]
 mod tests;
 
-pub use budget::MEMORY_BUDGET;
+pub use budget::MAX_VOLUME_BYTES;
 pub use options::{Mode, Options, Placement};
 pub use session::{Event, Session};
 pub use volume::Volume;

@@ -74,6 +74,9 @@ pub struct Options {
     pub refinement_patches: usize,
     /// M' (eq. 5) instead of M. Default: false.
     pub gradient_cost: bool,
+    /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses a video
+    /// whose working set would exceed it. Default: 1024 (256 before issue 17).
+    pub memory_budget_mib: usize,
 }
 
 impl Default for Options {
@@ -90,6 +93,7 @@ impl Default for Options {
             k: 0.01,
             refinement_patches: 2,
             gradient_cost: false,
+            memory_budget_mib: crate::core::budget::DEFAULT_MEMORY_BUDGET_MIB,
         }
     }
 }
@@ -102,6 +106,7 @@ impl Options {
     /// The output size (width, height, frames as the user sees them) for an input of this size,
     /// or an error naming the option that does not fit the mode.
     pub fn output_size(&self, input: (usize, usize, usize)) -> Result<(usize, usize, usize)> {
+        crate::core::budget::validate_budget(self.memory_budget_mib)?;
         let width = self.output_width.unwrap_or(input.0);
         let height = self.output_height.unwrap_or(input.1);
         if self.mode != Mode::Extend && (width, height) != (input.0, input.1) {

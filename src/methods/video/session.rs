@@ -91,7 +91,7 @@ impl Session {
                     patch_voxels: plane(input.0, input.1) * window,
                     search_bytes: 0,
                 }
-                .check(input, input)?;
+                .check(input, input, options.memory_budget_mib)?;
                 let tr = best_transition(&clip, options.transition_window)?;
                 let h = tr.half_window;
                 let a = clip.frames_range(tr.from - h - 1, 2 * h + 1)?;
@@ -132,7 +132,7 @@ impl Session {
                     patch_voxels: plane(input.0, input.1) * input.2,
                     search_bytes,
                 }
-                .check(input, size)?;
+                .check(input, size, options.memory_budget_mib)?;
                 let mut sources = vec![Source::new(clip.clone())];
                 if k > 0 {
                     sources.push(Source::new(clip.frames_range(0, k)?));

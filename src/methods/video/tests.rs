@@ -291,7 +291,7 @@ fn bad_input_gives_named_errors() {
         .unwrap()
         .to_string();
     assert!(
-        err.contains("2048x2048x100") && err.contains("256 MiB"),
+        err.contains("2048x2048x100") && err.contains("memory budget of 1024 MiB"),
         "{err}"
     );
     let err = Session::new(

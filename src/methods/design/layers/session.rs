@@ -56,6 +56,9 @@ pub struct LayerOptions {
     /// Candidates within (1 + tolerance) of the best SSD are acceptable. Default: 0.3.
     pub tolerance: f32,
     pub seed: u64,
+    /// The memory budget in MiB (see [`crate::core::budget`]): an output whose working set
+    /// would exceed it is refused. Default: 1024.
+    pub memory_budget_mib: usize,
 }
 
 impl Default for LayerOptions {
@@ -70,6 +73,7 @@ impl Default for LayerOptions {
             placement: LayerPlacement::Logistic,
             tolerance: 0.3,
             seed: 1,
+            memory_budget_mib: crate::core::budget::DEFAULT_MEMORY_BUDGET_MIB,
         }
     }
 }
@@ -84,8 +88,17 @@ impl LayerOptions {
         self.overlap.unwrap_or((self.patch_size / 6).max(2))
     }
 
-    fn validate(&self) -> Result<()> {
+    /// Checks every option, and that the output (4 channels at most) fits the memory budget
+    /// before any layer is known.
+    pub fn validate(&self) -> Result<()> {
         check_size("output", self.output_width, self.output_height)?;
+        crate::core::budget::validate_budget(self.memory_budget_mib)?;
+        let (w, h) = (self.output_width, self.output_height);
+        crate::methods::design::memory::layers_working_set((w, h, 4), self.patch_size, &[]).check(
+            &format!("output {w}x{h}"),
+            crate::methods::design::memory::LAYERS,
+            self.memory_budget_mib,
+        )?;
         if !(8..=256).contains(&self.patch_size) {
             return Err(Error::InvalidParameter {
                 name: "patchSize",
@@ -198,6 +211,17 @@ impl LayerDesign {
             .iter()
             .map(|t| t.with_channels(channels))
             .collect::<Result<_>>()?;
+        let dims: Vec<(usize, usize)> = textures.iter().map(|t| (t.width(), t.height())).collect();
+        crate::methods::design::memory::layers_working_set(
+            (w, h, channels),
+            options.patch_size,
+            &dims,
+        )
+        .check(
+            &format!("output {w}x{h}"),
+            crate::methods::design::memory::LAYERS,
+            options.memory_budget_mib,
+        )?;
         let searches = textures
             .iter()
             .map(|t| SearchTexture::new(t, options.patch_size))
