@@ -182,10 +182,18 @@ fn a_huge_output_is_refused_by_the_constructor_naming_the_budget() {
         }
         error_message(TextureOptimization::new(&ex, options(&entries)))
     };
-    let msg = huge(None);
+    // The default budget (1024 MiB) holds 4096x4096 (about 1 GiB); a smaller one refuses it.
+    assert!(
+        TextureOptimization::new(
+            &ex,
+            options(&[("outputWidth", 4096.into()), ("outputHeight", 4096.into())])
+        )
+        .is_ok()
+    );
+    let msg = huge(Some(512.into()));
     assert!(
         msg.starts_with("output 4096x4096: texture optimisation needs about")
-            && msg.contains("memory budget of 1024 MiB")
+            && msg.contains("memory budget of 512 MiB")
             && msg.contains("memoryBudgetMiB"),
         "{msg}"
     );

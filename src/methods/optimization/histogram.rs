@@ -14,10 +14,35 @@ use crate::core::Image;
 /// in the first-level cache while a million pixels are ranked).
 const BUCKETS: usize = 4096;
 
-/// Reused buffer of the ranking: the pixels below each bucket.
+/// A histogram matching under way (reused between matchings): three passes over the pixels
+/// (each channel's range, the bucket counts, the new values), resumable after any pixel so that
+/// a session can spread one over several steps.
 #[derive(Debug, Clone, Default)]
 pub struct Scratch {
+    /// The pass under way (0 to 2; 3 when done) and the next pixel in it.
+    pass: u8,
+    next: usize,
+    lo: [f32; 4],
+    hi: [f32; 4],
+    scale: [f32; 4],
+    /// Per channel, the pixels below each bucket (`BUCKETS + 1` counts).
     starts: Vec<u32>,
+}
+
+impl Scratch {
+    /// Starts a new matching.
+    pub fn restart(&mut self) {
+        self.pass = 0;
+        self.next = 0;
+        self.lo = [f32::INFINITY; 4];
+        self.hi = [f32::NEG_INFINITY; 4];
+    }
+
+    /// The share of the matching done, 0 to 1, over `pixels` pixels.
+    #[must_use]
+    pub fn fraction(&self, pixels: usize) -> f64 {
+        (f64::from(self.pass) + self.next as f64 / pixels.max(1) as f64) / 3.0
+    }
 }
 
 /// Each channel's values of the exemplar, sorted: the target quantiles.
@@ -57,65 +82,116 @@ impl SortedChannels {
         fixed: Option<&[f32]>,
         scratch: &mut Scratch,
     ) {
+        scratch.restart();
+        let mut unlimited = usize::MAX;
+        self.resume(output, strength, fixed, scratch, &mut unlimited);
+    }
+
+    /// [`SortedChannels::match_histogram`] in parts: at most `budget` more pixel visits from
+    /// where `scratch` stopped (after [`Scratch::restart`]), taken off `budget`; the result
+    /// does not depend on where it stops, as long as `output` is left alone in between.
+    /// Returns true when done.
+    pub fn resume(
+        &self,
+        output: &mut Image,
+        strength: f32,
+        fixed: Option<&[f32]>,
+        scratch: &mut Scratch,
+        budget: &mut usize,
+    ) -> bool {
         let c = output.channels().min(self.channels.len());
         let stride = output.channels();
         let free = |i: usize| fixed.is_none_or(|f| f[i] <= 0.0);
         let data = output.data_mut();
         let pixels = data.len() / stride;
-        // All channels in each pass over the interleaved values: the image is read three
-        // times, not three times per channel.
-        let (mut lo, mut hi) = ([f32::INFINITY; 4], [f32::NEG_INFINITY; 4]);
-        for i in (0..pixels).filter(|&i| free(i)) {
-            for k in 0..c {
-                let v = data[i * stride + k];
-                lo[k] = lo[k].min(v);
-                hi[k] = hi[k].max(v);
+        while scratch.pass < 3 && *budget > 0 {
+            let range = scratch.next..pixels.min(scratch.next.saturating_add(*budget));
+            *budget -= range.len();
+            scratch.next = range.end;
+            let Scratch {
+                pass,
+                lo,
+                hi,
+                scale,
+                starts,
+                ..
+            } = scratch;
+            // All channels in each pass over the interleaved values: the image is read three
+            // times, not three times per channel. (Truncating casts, not floor(): floor is a
+            // library call on baseline x86-64.)
+            let position = |v: f32, k: usize| {
+                let p = ((v - lo[k]) * scale[k]).max(0.0);
+                let b = (p as usize).min(BUCKETS - 1);
+                (b, p - b as f32)
+            };
+            match pass {
+                0 => {
+                    for i in range.filter(|&i| free(i)) {
+                        for k in 0..c {
+                            let v = data[i * stride + k];
+                            lo[k] = lo[k].min(v);
+                            hi[k] = hi[k].max(v);
+                        }
+                    }
+                }
+                1 => {
+                    for i in range.filter(|&i| free(i)) {
+                        for k in 0..c {
+                            starts[k * (BUCKETS + 1) + position(data[i * stride + k], k).0 + 1] +=
+                                1;
+                        }
+                    }
+                }
+                _ => {
+                    let n = starts[BUCKETS] as f32;
+                    for i in range.filter(|&i| free(i)) {
+                        for (k, target) in self.channels.iter().enumerate().take(c) {
+                            let table = &starts[k * (BUCKETS + 1)..(k + 1) * (BUCKETS + 1)];
+                            let v = &mut data[i * stride + k];
+                            let (b, fraction) = position(*v, k);
+                            let count = table[b + 1] - table[b];
+                            let within = ((fraction * count as f32) as u32).min(count - 1);
+                            let rank = (table[b] + within) as f32;
+                            // The exemplar value at the same quantile (centre of the rank's bin).
+                            let m = target.len();
+                            let q = ((rank + 0.5) * m as f32 / n) as usize;
+                            *v += strength * (target[q.min(m - 1)] - *v);
+                        }
+                    }
+                }
+            }
+            if scratch.next < pixels {
+                continue;
+            }
+            // The pass is done: prepare the next.
+            scratch.next = 0;
+            scratch.pass += 1;
+            match scratch.pass {
+                1 => {
+                    if scratch.lo[0] > scratch.hi[0] {
+                        scratch.pass = 3; // nothing free
+                    }
+                    for k in 0..c {
+                        scratch.scale[k] = if scratch.hi[k] > scratch.lo[k] {
+                            BUCKETS as f32 / (scratch.hi[k] - scratch.lo[k])
+                        } else {
+                            0.0
+                        };
+                    }
+                    scratch.starts.clear();
+                    scratch.starts.resize(c * (BUCKETS + 1), 0);
+                }
+                2 => {
+                    for table in scratch.starts.chunks_exact_mut(BUCKETS + 1) {
+                        for b in 0..BUCKETS {
+                            table[b + 1] += table[b];
+                        }
+                    }
+                }
+                _ => {}
             }
         }
-        if lo[0] > hi[0] {
-            return; // nothing free
-        }
-        let mut scale = [0.0f32; 4];
-        for k in 0..c {
-            if hi[k] > lo[k] {
-                scale[k] = BUCKETS as f32 / (hi[k] - lo[k]);
-            }
-        }
-        // The value's position in buckets: the bucket, and the fraction through it.
-        // (Truncating casts, not floor(): floor is a library call on baseline x86-64.)
-        let position = |v: f32, k: usize| {
-            let p = ((v - lo[k]) * scale[k]).max(0.0);
-            let b = (p as usize).min(BUCKETS - 1);
-            (b, p - b as f32)
-        };
-        let starts = &mut scratch.starts;
-        starts.clear();
-        starts.resize(c * (BUCKETS + 1), 0);
-        for i in (0..pixels).filter(|&i| free(i)) {
-            for k in 0..c {
-                starts[k * (BUCKETS + 1) + position(data[i * stride + k], k).0 + 1] += 1;
-            }
-        }
-        for table in starts.chunks_exact_mut(BUCKETS + 1) {
-            for b in 0..BUCKETS {
-                table[b + 1] += table[b];
-            }
-        }
-        let n = starts[BUCKETS] as usize;
-        for i in (0..pixels).filter(|&i| free(i)) {
-            for (k, target) in self.channels.iter().enumerate().take(c) {
-                let table = &starts[k * (BUCKETS + 1)..(k + 1) * (BUCKETS + 1)];
-                let v = &mut data[i * stride + k];
-                let (b, fraction) = position(*v, k);
-                let count = table[b + 1] - table[b];
-                let within = ((fraction * count as f32) as u32).min(count - 1);
-                let rank = (table[b] + within) as f32;
-                // The exemplar value at the same quantile (centre of the rank's bin).
-                let m = target.len();
-                let q = ((rank + 0.5) * m as f32 / n as f32) as usize;
-                *v += strength * (target[q.min(m - 1)] - *v);
-            }
-        }
+        scratch.pass >= 3
     }
 }
 
@@ -144,6 +220,17 @@ mod tests {
         // Ranks are kept: a brighter input pixel stays at least as bright.
         let (p, q) = (before.pixel(3, 2)[0], before.pixel(9, 5)[0]);
         assert!(p < q && out.pixel(3, 2)[0] <= out.pixel(9, 5)[0]);
+        // In parts (a few pixels per call), the same values.
+        let mut parts = before.clone();
+        let mut scratch = Scratch::default();
+        scratch.restart();
+        let sorted = SortedChannels::new(&ex);
+        let mut calls = 0;
+        while !sorted.resume(&mut parts, 1.0, None, &mut scratch, &mut 37) {
+            calls += 1;
+        }
+        assert!(calls >= 3 * 512 / 37 - 1, "{calls} calls");
+        assert_eq!(parts, out);
         let mut same = before.clone();
         SortedChannels::new(&ex).match_histogram(&mut same, 0.0, None, &mut Scratch::default());
         assert_eq!(same, before);

@@ -515,19 +515,55 @@ impl LevelSolver {
         output: &mut Image,
         constraint: Option<&Constraint>,
     ) -> usize {
+        let iterations = self.average(exemplar, output, constraint);
+        self.begin_histogram();
+        let mut unlimited = usize::MAX;
+        self.resume_histogram(output, constraint, &mut unlimited);
+        iterations
+    }
+
+    /// The first half of [`LevelSolver::finish_e_step`]: the output from the sums. Returns the
+    /// conjugate-gradient iterations (0 without the gradient energy).
+    pub fn average(
+        &mut self,
+        exemplar: &Image,
+        output: &mut Image,
+        constraint: Option<&Constraint>,
+    ) -> usize {
         let run = self.summing.take().expect("an E-step is begun");
         debug_assert_eq!(run.next, self.matches.len(), "every node is summed");
         let m = self.matches_for(exemplar, &run.weights);
-        let iterations = run.sums.finish(&m, output, constraint);
+        run.sums.finish(&m, output, constraint)
+    }
+
+    /// Starts the second half of [`LevelSolver::finish_e_step`]: histogram matching.
+    pub fn begin_histogram(&mut self) {
+        self.order.restart();
+    }
+
+    /// Runs the begun histogram matching (when the setup asks for one) for at most `budget`
+    /// more pixel visits, taken off it. Returns true when done.
+    pub fn resume_histogram(
+        &mut self,
+        output: &mut Image,
+        constraint: Option<&Constraint>,
+        budget: &mut usize,
+    ) -> bool {
         let strength = self.setup.histogram_matching;
-        if strength > 0.0 {
-            let fixed = constraint
-                .filter(|_| !self.setup.match_constrained)
-                .map(|c| c.mask.as_slice());
-            self.histogram
-                .match_histogram(output, strength, fixed, &mut self.order);
+        if strength <= 0.0 {
+            return true;
         }
-        iterations
+        let fixed = constraint
+            .filter(|_| !self.setup.match_constrained)
+            .map(|c| c.mask.as_slice());
+        self.histogram
+            .resume(output, strength, fixed, &mut self.order, budget)
+    }
+
+    /// The share of the begun histogram matching done, over an output of `pixels` pixels.
+    #[must_use]
+    pub fn histogram_fraction(&self, pixels: usize) -> f64 {
+        self.order.fraction(pixels)
     }
 
     /// The texture energy sum_p d_p^(r/2) of the pixel term ||x_p - z_p||^2 (also with a

@@ -43,8 +43,12 @@ enum Stage {
     Start,
     /// The M-step on a level's up-sampled output, before its first E-step.
     FirstMatch,
-    /// The E-step is next.
+    /// The E-step's sums are next (or under way).
     EStep,
+    /// The E-step's average is next.
+    Average,
+    /// Histogram matching of the E-step's output is next, then the M-step begins.
+    Histogram,
     /// The M-step after the E-step is running.
     MStep,
 }
@@ -393,7 +397,12 @@ impl Session {
             Stage::FirstMatch => (Phase::FirstMatch, 0.2 * fraction),
             Stage::Start | Stage::EStep => (
                 Phase::EStep,
-                0.2 + 0.2 * solver.e_step_fraction().unwrap_or(0.0),
+                0.2 + 0.15 * solver.e_step_fraction().unwrap_or(0.0),
+            ),
+            Stage::Average => (Phase::EStep, 0.35),
+            Stage::Histogram => (
+                Phase::EStep,
+                0.35 + 0.05 * solver.histogram_fraction(lv.output_width * lv.output_height),
             ),
             Stage::MStep => (Phase::MStep, 0.4 + 0.6 * fraction),
         };
@@ -530,15 +539,25 @@ impl Session {
                     if !solver.e_step_running() {
                         solver.begin_e_step(output);
                     }
-                    let summed = solver.e_step_fraction().is_some_and(|f| f >= 1.0);
-                    if !summed {
-                        let mut nodes = chunk;
-                        solver.resume_e_step(exemplar, &mut nodes);
-                    } else if worked && time_up(1.0 / 3.0) {
-                        // The last part cannot be cut: leave it to a fresh step.
-                        return Ok(None);
-                    } else {
-                        self.solver_iterations = solver.finish_e_step(exemplar, output, constraint);
+                    let mut nodes = chunk;
+                    if solver.resume_e_step(exemplar, &mut nodes) {
+                        self.stage = Stage::Average;
+                    }
+                }
+                // The E-step's average cannot be cut: it starts only early in a step.
+                Stage::Average if worked && time_up(1.0 / 3.0) => return Ok(None),
+                Stage::Average => {
+                    let output = self.output.as_mut().expect("made at the start");
+                    self.solver_iterations = solver.average(exemplar, output, constraint);
+                    solver.begin_histogram();
+                    self.stage = Stage::Histogram;
+                }
+                Stage::Histogram => {
+                    let output = self.output.as_mut().expect("made at the start");
+                    // A pixel visit of histogram matching costs about as much as 8 values of
+                    // a neighbourhood comparison.
+                    let mut pixels = chunk.saturating_mul(len) / 8;
+                    if solver.resume_histogram(output, constraint, &mut pixels) {
                         solver.begin_m_step(output);
                         self.stage = Stage::MStep;
                     }
