@@ -4,6 +4,7 @@
 
 use super::canvas::{Patch, UNCOVERED};
 use super::options::Placement;
+use super::source_window::search_key;
 use super::synthesis::Synthesis;
 use crate::core::{Error, Image, Result};
 use crate::solvers::fft_ssd::{Boundary, MAX_TRANSFORM_VALUES, transform_size};
@@ -31,9 +32,8 @@ impl Synthesis {
     /// largest total seam error.
     #[must_use]
     pub fn error_region(&self) -> Region {
-        let side = self
-            .options
-            .error_region_side(self.sources[0].width(), self.sources[0].height());
+        let (ew, eh) = self.window_extent(0);
+        let side = self.options.error_region_side(ew, eh);
         let (w, h) = (self.canvas.width, self.canvas.height);
         let clamp = |c: usize, len: usize| c.saturating_sub(side / 2).min(len - side);
         if !self.canvas.is_covered() {
@@ -58,14 +58,16 @@ impl Synthesis {
     }
 
     /// Refuses, before any step, an exemplar whose search window would need a transform larger
-    /// than the FFT search allows (a camera photo used whole: every patch is the whole source).
+    /// than the FFT search allows. With the sources bounded to windows of at most
+    /// [`super::source_window::MAX_SOURCE_SIDE`] a side this never happens (the transform is at
+    /// most 1536 values a side); it guards a synthesis that uses its sources whole
+    /// (`max_source_side = usize::MAX`).
     pub fn check_search_size(&self) -> Result<()> {
         if self.options.placement == Placement::Random {
             return Ok(());
         }
-        let side = self
-            .options
-            .error_region_side(self.sources[0].width(), self.sources[0].height());
+        let (ew, eh) = self.window_extent(0);
+        let side = self.options.error_region_side(ew, eh);
         let (w, h) = (self.canvas.width, self.canvas.height);
         // The window is largest where the border does not clip it: the region in the middle.
         let region = Region {
@@ -85,8 +87,9 @@ impl Synthesis {
                     width: source.width(),
                     height: source.height(),
                     reason: format!(
-                        "graph-cut matching would search a {nx}x{ny} transform, more than the \
-                         {MAX_TRANSFORM_VALUES} values allowed; shrink it first (e.g. \
+                        "graph-cut matching with patches of {pw}x{ph} would search a {nx}x{ny} \
+                         transform, more than the {MAX_TRANSFORM_VALUES} values allowed; bound \
+                         the source windows (max_source_side), shrink it first (e.g. \
                          exemplar.resized(512)) or use placement 'random'"
                     ),
                 });
@@ -95,11 +98,13 @@ impl Synthesis {
         Ok(())
     }
 
-    /// Every unused offset of every allowed source whose patch covers `region` entirely.
+    /// Every unused offset of every allowed source whose patch covers `region` entirely. The
+    /// patch is the source's current window (see `source_window.rs`; [`Synthesis::draw_windows`]
+    /// draws it before each placement): the whole source when within the bound.
     #[must_use]
     pub fn candidates(&self, region: Region) -> Vec<Patch> {
         let mut out = Vec::new();
-        for (s, source) in self.sources.iter().enumerate() {
+        for s in 0..self.sources.len() {
             if !self.source_allowed(s, region) {
                 continue;
             }
@@ -107,9 +112,9 @@ impl Synthesis {
             if sw < region.width || sh < region.height {
                 continue;
             }
+            let window = self.window(s);
             let (x0, y0) = (region.x as i64, region.y as i64);
             let (x1, y1) = (x0 + region.width as i64, y0 + region.height as i64);
-            let _ = source;
             for ty in (y1 - sh as i64)..=y0 {
                 for tx in (x1 - sw as i64)..=x0 {
                     let (tx, ty) = if self.canvas.wrap {
@@ -124,6 +129,7 @@ impl Synthesis {
                         source: s as u32,
                         tx: tx as i32,
                         ty: ty as i32,
+                        window,
                     };
                     if !self.used.contains(&patch) {
                         out.push(patch);
@@ -132,21 +138,6 @@ impl Synthesis {
             }
         }
         out
-    }
-
-    /// The part of source `s` a patch uses: all of it, or at most the output size when wrapping
-    /// (a larger patch would overlap itself).
-    #[must_use]
-    pub fn patch_extent(&self, s: usize) -> (usize, usize) {
-        let source = &self.sources[s];
-        if self.canvas.wrap {
-            (
-                source.width().min(self.canvas.width),
-                source.height().min(self.canvas.height),
-            )
-        } else {
-            (source.width(), source.height())
-        }
     }
 
     /// With perspective on, each band of output rows takes only the source whose scale belongs
@@ -184,22 +175,26 @@ impl Synthesis {
                 continue;
             }
             let (pw, ph) = self.patch_extent(s);
-            let patch_image = self.sources[s].image.crop(0, 0, pw, ph)?;
+            let (wx, wy) = self.window(s);
+            let patch_image = self.sources[s]
+                .image
+                .crop(wx as usize, wy as usize, pw, ph)?;
             let window = SearchWindow::around(region, (pw, ph), (w, h), self.canvas.wrap);
             // Weights on the output: covered pixels (eq. 2), and only inside the error region
             // (the output sub-patch of eq. 4) for sub-patch matching.
             let (pixels, weights) = window.gather(&self.canvas, |x, y| {
                 !sub_patch || region_contains(region, x, y, w, h, self.canvas.wrap)
             })?;
-            // Keyed by source: its transforms are computed once per synthesis, not per placement
-            // (the window's size depends on the patch and the region only, so it never changes).
+            // Keyed by source and window: a source within the bound is transformed once per
+            // synthesis, not per placement (the window's size depends on the patch and the region
+            // only, so it never changes); a larger one each time its window moves.
             let map = self.ssd.search_keyed(
                 &pixels,
                 Some(&weights),
                 &patch_image,
                 None,
                 window.boundary,
-                Some(s as u64),
+                Some(search_key(s, (wx, wy))),
             )?;
             for patch in of_source {
                 let (ox, oy) = window.offset(patch, (w, h));
