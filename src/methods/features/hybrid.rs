@@ -201,7 +201,10 @@ pub fn choose(
                 && label[oy as usize * w + ox as usize] != UNCOVERED
         };
         let f = &mut features[src];
-        let overlap = f.pixels.iter().filter(|&&j| made_at(j)).count() as u32;
+        // Only the window's rows can land on the output (the pixels are in scan order).
+        let rows = |v: i64| f.pixels.partition_point(|&j| j < (v as usize) * sw);
+        let in_rows = &f.pixels[rows(wy)..rows(wy + ph as i64)];
+        let overlap = in_rows.iter().filter(|&&j| made_at(j)).count() as u32;
         let cost = f.index.cost_in_exemplar(
             &context,
             overlap,
