@@ -106,6 +106,10 @@ fn event_object(e: &Event) -> JsValue {
             ("source", p.source.into()),
             ("offsetX", p.tx.into()),
             ("offsetY", p.ty.into()),
+            // The top-left corner, in the source, of the window the patch copies: (0, 0) unless
+            // the exemplar is larger than 512 a side (see methods/graphcut/source_window.rs).
+            ("windowX", p.window.0.into()),
+            ("windowY", p.window.1.into()),
         ])
     });
     let (x, y, w, h) = e.rect;

@@ -175,3 +175,52 @@ fn a_huge_output_is_refused_by_the_constructor_naming_the_budget() {
     ));
     assert!(msg.starts_with("invalid memoryBudgetMiB"), "{msg}");
 }
+
+/// A photo larger than 512 a side is accepted (issue 17): each placement copies a window of at
+/// most 512x512 of it, drawn afresh, so its steps cost what a 512x512 exemplar's do.
+#[wasm_bindgen_test]
+fn a_graphcut_session_accepts_a_large_exemplar() {
+    let (w, h) = (1600usize, 1200usize);
+    let rgba: Vec<u8> = (0..w * h)
+        .flat_map(|i| {
+            let (x, y) = (i % w, i / w);
+            let v = ((x * 7 + y * 3) % 97 + (x / 50 + y / 40) % 3 * 50) as u8;
+            [v, v / 2 + 40, 255 - v, 255]
+        })
+        .collect();
+    let ex = Exemplar::from_rgba(&rgba, w as u32, h as u32).unwrap();
+    for placement in ["entire-patch", "sub-patch", "random"] {
+        let opts = options(&[
+            ("outputWidth", 64.into()),
+            ("outputHeight", 64.into()),
+            ("placement", placement.into()),
+            ("refinementPatches", 2.into()),
+        ]);
+        let mut session = GraphcutTextures::new(&ex, opts).unwrap();
+        let mut windows = Vec::new();
+        for _ in 0..3 {
+            let event = session.step().unwrap();
+            let rect = get(&event, "rect");
+            assert!(
+                get(&rect, "width").as_f64().unwrap() <= 512.0,
+                "{placement}"
+            );
+            assert!(
+                get(&rect, "height").as_f64().unwrap() <= 512.0,
+                "{placement}"
+            );
+            let patch = get(&event, "patch");
+            let (wx, wy) = (
+                get(&patch, "windowX").as_f64().unwrap(),
+                get(&patch, "windowY").as_f64().unwrap(),
+            );
+            assert!(wx + 512.0 <= w as f64 && wy + 512.0 <= h as f64);
+            windows.push((wx as u32, wy as u32));
+        }
+        assert!(
+            session.done(),
+            "{placement}: covered and refined in 3 steps"
+        );
+        assert!(windows.iter().any(|&w| w != windows[0]), "{placement}");
+    }
+}

@@ -236,7 +236,7 @@ export interface Rect { x: number; y: number; width: number; height: number }
 export interface GraphcutTexturesEvent {
   kind: 'placed' | 'done';
   done: boolean;
-  patch: { source: number; offsetX: number; offsetY: number } | null;
+  patch: { source: number; offsetX: number; offsetY: number; windowX: number; windowY: number } | null;
   rect: Rect | null;
   region: Rect | null;
   pixelsTaken: number;

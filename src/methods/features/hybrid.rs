@@ -59,8 +59,7 @@ pub fn canvas_features(s: &Synthesis, features: &[SourceFeatures]) -> (Vec<bool>
             continue;
         }
         let patch = s.canvas.patches[label as usize];
-        let source = &s.sources[patch.source as usize];
-        if let Some((sx, sy)) = s.canvas.source_coords(patch, source, i % w, i / w) {
+        if let Some((sx, sy)) = s.source_coords(patch, i % w, i / w) {
             let f = &features[patch.source as usize].map;
             let j = sy * f.width + sx;
             mask[i] = f.mask[j];
@@ -176,31 +175,42 @@ pub fn choose(
     let mut costs: Vec<(f32, usize)> = Vec::with_capacity(best.len());
     for c in &best {
         let src = c.patch.source as usize;
-        let (sw, sh) = (s.sources[src].width(), s.sources[src].height());
+        // The patch is the source's window (the whole source within the bound): window pixel
+        // (u, v) is source pixel window + (u, v) and lands on output pixel t + (u, v).
+        let sw = s.sources[src].width();
+        let (pw, ph) = s.patch_extent(src);
+        let (ew, eh) = s.window_extent(src);
+        let (wx, wy) = (i64::from(c.patch.window.0), i64::from(c.patch.window.1));
         let (tx, ty) = (i64::from(c.patch.tx), i64::from(c.patch.ty));
         // The output's features under the patch, at the source pixels the patch shows there.
         context.clear();
         for &i in &made_features {
-            let (sx, sy) = ((i % w) as i64 - tx, (i / w) as i64 - ty);
-            if (0..sw as i64).contains(&sx) && (0..sh as i64).contains(&sy) {
-                context.push((sx as usize, sy as usize, angle[i]));
+            let (u, v) = ((i % w) as i64 - tx, (i / w) as i64 - ty);
+            if (0..pw as i64).contains(&u) && (0..ph as i64).contains(&v) {
+                context.push(((u + wx) as usize, (v + wy) as usize, angle[i]));
             }
         }
         // The source's features that would land on made output pixels.
         let made_at = |j: usize| {
-            let (ox, oy) = ((j % sw) as i64 + tx, (j / sw) as i64 + ty);
-            (0..w as i64).contains(&ox)
+            let (u, v) = ((j % sw) as i64 - wx, (j / sw) as i64 - wy);
+            let (ox, oy) = (u + tx, v + ty);
+            (0..pw as i64).contains(&u)
+                && (0..ph as i64).contains(&v)
+                && (0..w as i64).contains(&ox)
                 && (0..h as i64).contains(&oy)
                 && label[oy as usize * w + ox as usize] != UNCOVERED
         };
         let f = &mut features[src];
-        let overlap = f.pixels.iter().filter(|&&j| made_at(j)).count() as u32;
+        // Only the window's rows can land on the output (the pixels are in scan order).
+        let rows = |v: i64| f.pixels.partition_point(|&j| j < (v as usize) * sw);
+        let in_rows = &f.pixels[rows(wy)..rows(wy + ph as i64)];
+        let overlap = in_rows.iter().filter(|&&j| made_at(j)).count() as u32;
         let cost = f.index.cost_in_exemplar(
             &context,
             overlap,
             made_at,
             TAU_MATCH,
-            sw.min(sh) as f32 / 4.0,
+            ew.min(eh) as f32 / 4.0,
         );
         costs.push((cost, context.len()));
     }
@@ -359,16 +369,7 @@ mod tests {
             },
         )
         .unwrap();
-        s.place(
-            Patch {
-                source: 0,
-                tx: 0,
-                ty: 0,
-            },
-            &[],
-            &[],
-        )
-        .unwrap();
+        s.place(Patch::new(0, 0, 0), &[], &[]).unwrap();
         let near = frontier(&s, 5);
         for y in 0..80 {
             for x in 0..96 {

@@ -2,19 +2,34 @@
 //! and the cost of the seam on every edge between neighbouring pixels, remembered so that later
 //! patches can overwrite bad old seams (section 3.1).
 
-use super::source::Source;
 use crate::core::{Image, Result};
 
 /// Label of a pixel no patch has covered yet.
 pub const UNCOVERED: u32 = u32::MAX;
 
-/// A placed patch: the whole of `source`, translated by (tx, ty): output pixel p copies source
-/// pixel p - t (modulo the output size when wrapping).
+/// A placed patch: the window of `source` whose top-left corner is `window` (the whole source
+/// when it is within the bound of `source_window.rs`: window (0, 0)), translated by (tx, ty):
+/// output pixel p copies window pixel p - t, i.e. source pixel p - t + window (p - t modulo the
+/// output size when wrapping).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Patch {
     pub source: u32,
     pub tx: i32,
     pub ty: i32,
+    pub window: (u32, u32),
+}
+
+impl Patch {
+    /// The whole of a source within the bound (window at the origin), translated by (tx, ty).
+    #[must_use]
+    pub const fn new(source: u32, tx: i32, ty: i32) -> Patch {
+        Patch {
+            source,
+            tx,
+            ty,
+            window: (0, 0),
+        }
+    }
 }
 
 /// The output and its seam memory.
@@ -104,13 +119,14 @@ impl Canvas {
         }
     }
 
-    /// The source coordinates patch `patch` would copy to output pixel (x, y), if it covers it.
+    /// The source coordinates patch `patch`, `extent` pixels wide and high (see
+    /// `Synthesis::patch_extent`), would copy to output pixel (x, y), if it covers it.
     #[inline]
     #[must_use]
     pub fn source_coords(
         &self,
         patch: Patch,
-        source: &Source,
+        (pw, ph): (usize, usize),
         x: usize,
         y: usize,
     ) -> Option<(usize, usize)> {
@@ -122,8 +138,12 @@ impl Canvas {
             sx = sx.rem_euclid(self.width as i64);
             sy = sy.rem_euclid(self.height as i64);
         }
-        ((0..source.width() as i64).contains(&sx) && (0..source.height() as i64).contains(&sy))
-            .then_some((sx as usize, sy as usize))
+        ((0..pw as i64).contains(&sx) && (0..ph as i64).contains(&sy)).then(|| {
+            (
+                sx as usize + patch.window.0 as usize,
+                sy as usize + patch.window.1 as usize,
+            )
+        })
     }
 
     /// Per-pixel seam error: the sum of the seam costs on the pixel's edges (the error map that

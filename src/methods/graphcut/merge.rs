@@ -95,6 +95,9 @@ impl Merge {
             ssd: SsdSearch::new(),
             seam_features: Vec::new(),
             seam_feature_weight: 0.0,
+            // The user placed every source: each is laid down whole.
+            max_source_side: usize::MAX,
+            windows: Vec::new(),
         };
         Ok(Merge {
             synthesis,
@@ -121,11 +124,7 @@ impl Merge {
         }
         let k = self.next;
         let (tx, ty) = self.offsets[k];
-        let patch = Patch {
-            source: k as u32,
-            tx,
-            ty,
-        };
+        let patch = Patch::new(k as u32, tx, ty);
         let mut force_new = Vec::new();
         let mut keep_old = Vec::new();
         for (i, &c) in self.constraints.iter().enumerate() {

@@ -15,6 +15,7 @@ pub mod seam;
 pub mod seam_graph;
 pub mod session;
 pub mod source;
+pub mod source_window;
 pub mod synthesis;
 pub mod teaching;
 

@@ -5,6 +5,7 @@
 use super::canvas::{Patch, UNCOVERED};
 use super::options::{Options, Placement};
 use super::source::Source;
+use super::source_window::{MAX_SOURCE_SIDE, search_key, window_extent};
 use super::synthesis::Synthesis;
 use crate::core::{Error, Image, Result};
 use crate::solvers::fft_ssd::{Boundary, MAX_TRANSFORM_VALUES, transform_size};
@@ -32,9 +33,8 @@ impl Synthesis {
     /// largest total seam error.
     #[must_use]
     pub fn error_region(&self) -> Region {
-        let side = self
-            .options
-            .error_region_side(self.sources[0].width(), self.sources[0].height());
+        let (ew, eh) = self.window_extent(0);
+        let side = self.options.error_region_side(ew, eh);
         let (w, h) = (self.canvas.width, self.canvas.height);
         let clamp = |c: usize, len: usize| c.saturating_sub(side / 2).min(len - side);
         if !self.canvas.is_covered() {
@@ -59,42 +59,53 @@ impl Synthesis {
     }
 
     /// Refuses, before any step, an exemplar whose search window would need a transform larger
-    /// than the FFT search allows (a camera photo used whole: every patch is the whole source).
+    /// than the FFT search allows. With the sources bounded to windows of at most
+    /// [`super::source_window::MAX_SOURCE_SIDE`] a side this never happens (the transform is at
+    /// most 1536 values a side); it guards a synthesis that uses its sources whole
+    /// (`max_source_side = usize::MAX`).
     pub fn check_search_size(&self) -> Result<()> {
-        if let Some((s, nx, ny)) = self.largest_search()
-            && nx.saturating_mul(ny) > MAX_TRANSFORM_VALUES
-        {
-            let source = &self.sources[s];
-            return Err(Error::InvalidSize {
-                what: "exemplar",
-                width: source.width(),
-                height: source.height(),
-                reason: format!(
-                    "graph-cut matching would search a {nx}x{ny} transform, more than the \
-                     {MAX_TRANSFORM_VALUES} values allowed; shrink it first (e.g. \
-                     exemplar.resized(512)) or use placement 'random'"
-                ),
-            });
+        if self.options.placement == Placement::Random {
+            return Ok(());
+        }
+        let (ew, eh) = self.window_extent(0);
+        let side = self.options.error_region_side(ew, eh);
+        let (w, h) = (self.canvas.width, self.canvas.height);
+        // The window is largest where the border does not clip it: the region in the middle.
+        let region = Region {
+            x: w.saturating_sub(side) / 2,
+            y: h.saturating_sub(side) / 2,
+            width: side,
+            height: side,
+        };
+        for s in 0..self.sources.len() {
+            let (pw, ph) = self.patch_extent(s);
+            let window = SearchWindow::around(region, (pw, ph), (w, h), self.canvas.wrap);
+            let (nx, ny) = transform_size((window.width, window.height), (pw, ph), window.boundary);
+            if nx.saturating_mul(ny) > MAX_TRANSFORM_VALUES {
+                let source = &self.sources[s];
+                return Err(Error::InvalidSize {
+                    what: "exemplar",
+                    width: source.width(),
+                    height: source.height(),
+                    reason: format!(
+                        "graph-cut matching with patches of {pw}x{ph} would search a {nx}x{ny} \
+                         transform, more than the {MAX_TRANSFORM_VALUES} values allowed; bound \
+                         the source windows (max_source_side), shrink it first (e.g. \
+                         exemplar.resized(512)) or use placement 'random'"
+                    ),
+                });
+            }
         }
         Ok(())
     }
 
-    /// The largest FFT search a placement makes: (source, transform width, height), or `None`
-    /// for random placement, which searches nothing.
-    #[must_use]
-    pub fn largest_search(&self) -> Option<(usize, usize, usize)> {
-        largest_search(
-            &self.options,
-            &self.sources,
-            (self.canvas.width, self.canvas.height, self.canvas.wrap),
-        )
-    }
-
-    /// Every unused offset of every allowed source whose patch covers `region` entirely.
+    /// Every unused offset of every allowed source whose patch covers `region` entirely. The
+    /// patch is the source's current window (see `source_window.rs`; [`Synthesis::draw_windows`]
+    /// draws it before each placement): the whole source when within the bound.
     #[must_use]
     pub fn candidates(&self, region: Region) -> Vec<Patch> {
         let mut out = Vec::new();
-        for (s, source) in self.sources.iter().enumerate() {
+        for s in 0..self.sources.len() {
             if !self.source_allowed(s, region) {
                 continue;
             }
@@ -102,9 +113,9 @@ impl Synthesis {
             if sw < region.width || sh < region.height {
                 continue;
             }
+            let window = self.window(s);
             let (x0, y0) = (region.x as i64, region.y as i64);
             let (x1, y1) = (x0 + region.width as i64, y0 + region.height as i64);
-            let _ = source;
             for ty in (y1 - sh as i64)..=y0 {
                 for tx in (x1 - sw as i64)..=x0 {
                     let (tx, ty) = if self.canvas.wrap {
@@ -119,6 +130,7 @@ impl Synthesis {
                         source: s as u32,
                         tx: tx as i32,
                         ty: ty as i32,
+                        window,
                     };
                     if !self.used.contains(&patch) {
                         out.push(patch);
@@ -127,16 +139,6 @@ impl Synthesis {
             }
         }
         out
-    }
-
-    /// The part of source `s` a patch uses: all of it, or at most the output size when wrapping
-    /// (a larger patch would overlap itself).
-    #[must_use]
-    pub fn patch_extent(&self, s: usize) -> (usize, usize) {
-        patch_extent(
-            &self.sources[s],
-            (self.canvas.width, self.canvas.height, self.canvas.wrap),
-        )
     }
 
     /// With perspective on, each band of output rows takes only the source whose scale belongs
@@ -174,22 +176,26 @@ impl Synthesis {
                 continue;
             }
             let (pw, ph) = self.patch_extent(s);
-            let patch_image = self.sources[s].image.crop(0, 0, pw, ph)?;
+            let (wx, wy) = self.window(s);
+            let patch_image = self.sources[s]
+                .image
+                .crop(wx as usize, wy as usize, pw, ph)?;
             let window = SearchWindow::around(region, (pw, ph), (w, h), self.canvas.wrap);
             // Weights on the output: covered pixels (eq. 2), and only inside the error region
             // (the output sub-patch of eq. 4) for sub-patch matching.
             let (pixels, weights) = window.gather(&self.canvas, |x, y| {
                 !sub_patch || region_contains(region, x, y, w, h, self.canvas.wrap)
             })?;
-            // Keyed by source: its transforms are computed once per synthesis, not per placement
-            // (the window's size depends on the patch and the region only, so it never changes).
+            // Keyed by source and window: a source within the bound is transformed once per
+            // synthesis, not per placement (the window's size depends on the patch and the region
+            // only, so it never changes); a larger one each time its window moves.
             let map = self.ssd.search_keyed(
                 &pixels,
                 Some(&weights),
                 &patch_image,
                 None,
                 window.boundary,
-                Some(s as u64),
+                Some(search_key(s, (wx, wy))),
             )?;
             for patch in of_source {
                 let (ox, oy) = window.offset(patch, (w, h));
@@ -236,6 +242,49 @@ impl Synthesis {
             .find(|(_, w)| **w > 0.0)
             .map(|(c, _)| c.patch)
     }
+}
+
+/// The part of `source` a patch uses on a `(width, height, wrap)` canvas: its window (at most
+/// [`MAX_SOURCE_SIDE`] a side, see `source_window.rs`), or at most the output size when wrapping
+/// (a larger patch would overlap itself). For estimates made before a synthesis exists.
+#[must_use]
+pub fn patch_extent(source: &Source, (w, h, wrap): (usize, usize, bool)) -> (usize, usize) {
+    let (ww, wh) = window_extent(source.width(), source.height(), MAX_SOURCE_SIDE);
+    if wrap {
+        (ww.min(w), wh.min(h))
+    } else {
+        (ww, wh)
+    }
+}
+
+/// The largest FFT search a placement on a `(width, height, wrap)` canvas makes: (source,
+/// transform width, height), or `None` for random placement, which searches nothing.
+#[must_use]
+pub fn largest_search(
+    options: &Options,
+    sources: &[Source],
+    (w, h, wrap): (usize, usize, bool),
+) -> Option<(usize, usize, usize)> {
+    if options.placement == Placement::Random {
+        return None;
+    }
+    let (ew, eh) = window_extent(sources[0].width(), sources[0].height(), MAX_SOURCE_SIDE);
+    let side = options.error_region_side(ew, eh);
+    // The window is largest where the border does not clip it: the region in the middle.
+    let region = Region {
+        x: w.saturating_sub(side) / 2,
+        y: h.saturating_sub(side) / 2,
+        width: side,
+        height: side,
+    };
+    (0..sources.len())
+        .map(|s| {
+            let (pw, ph) = patch_extent(&sources[s], (w, h, wrap));
+            let window = SearchWindow::around(region, (pw, ph), (w, h), wrap);
+            let (nx, ny) = transform_size((window.width, window.height), (pw, ph), window.boundary);
+            (s, nx, ny)
+        })
+        .max_by_key(|&(_, nx, ny)| nx.saturating_mul(ny))
 }
 
 /// Whether output pixel (x, y) lies in `region`.
@@ -464,44 +513,4 @@ mod tests {
         assert!(!region_contains(r, 0, 1, 6, 5, false));
         assert!(region_contains(r, 5, 0, 6, 5, false));
     }
-}
-
-/// The extent of a patch of `source` on a `(width, height, wrap)` canvas (a periodic canvas
-/// clips it to its own size).
-#[must_use]
-pub fn patch_extent(source: &Source, (w, h, wrap): (usize, usize, bool)) -> (usize, usize) {
-    if wrap {
-        (source.width().min(w), source.height().min(h))
-    } else {
-        (source.width(), source.height())
-    }
-}
-
-/// The largest FFT search a placement on a `(width, height, wrap)` canvas makes: (source,
-/// transform width, height), or `None` for random placement, which searches nothing.
-#[must_use]
-pub fn largest_search(
-    options: &Options,
-    sources: &[Source],
-    (w, h, wrap): (usize, usize, bool),
-) -> Option<(usize, usize, usize)> {
-    if options.placement == Placement::Random {
-        return None;
-    }
-    let side = options.error_region_side(sources[0].width(), sources[0].height());
-    // The window is largest where the border does not clip it: the region in the middle.
-    let region = Region {
-        x: w.saturating_sub(side) / 2,
-        y: h.saturating_sub(side) / 2,
-        width: side,
-        height: side,
-    };
-    (0..sources.len())
-        .map(|s| {
-            let (pw, ph) = patch_extent(&sources[s], (w, h, wrap));
-            let window = SearchWindow::around(region, (pw, ph), (w, h), wrap);
-            let (nx, ny) = transform_size((window.width, window.height), (pw, ph), window.boundary);
-            (s, nx, ny)
-        })
-        .max_by_key(|&(_, nx, ny)| nx.saturating_mul(ny))
 }

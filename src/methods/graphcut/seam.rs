@@ -71,8 +71,7 @@ impl Synthesis {
         for &i in &taken {
             let (x, y) = (i % w, i / w);
             let (sx, sy) = self
-                .canvas
-                .source_coords(patch, source, x, y)
+                .source_coords(patch, x, y)
                 .expect("footprint pixels are covered by the patch");
             self.canvas
                 .pixels

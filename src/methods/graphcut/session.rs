@@ -97,6 +97,7 @@ impl Session {
         let s = &mut self.synthesis;
         let was_covered = s.canvas.is_covered();
         let region = s.error_region();
+        s.draw_windows();
         let candidates = s.candidates(region);
         let scored = s.score(region, &candidates)?;
         let chosen = choose(s, &scored);

@@ -7,6 +7,7 @@ use super::canvas::{Canvas, Patch};
 use super::cost::{Sample, match_cost, value_sigma};
 use super::options::Options;
 use super::source::{Source, build_sources};
+use super::source_window::{MAX_SOURCE_SIDE, draw_origin, window_extent};
 use crate::core::{Image, Result, Rng};
 use crate::solvers::fft_ssd::SsdSearch;
 
@@ -27,6 +28,12 @@ pub struct Synthesis {
     /// placement: a cut through a curve that does not go on in the other patch breaks it).
     pub seam_features: Vec<Vec<bool>>,
     pub seam_feature_weight: f32,
+    /// The largest side of the part of a source one placement uses ([`MAX_SOURCE_SIDE`]; see
+    /// `source_window.rs`). `usize::MAX` uses every source whole, as the paper does.
+    pub max_source_side: usize,
+    /// The window origin of every source for the current placement (drawn by
+    /// [`Synthesis::draw_windows`]; (0, 0) for a source within the bound).
+    pub windows: Vec<(u32, u32)>,
 }
 
 impl Synthesis {
@@ -56,6 +63,8 @@ impl Synthesis {
             ssd: SsdSearch::new(),
             seam_features: Vec::new(),
             seam_feature_weight: 0.0,
+            max_source_side: MAX_SOURCE_SIDE,
+            windows: Vec::new(),
         };
         synthesis.check_search_size()?;
         Ok(synthesis)
@@ -74,7 +83,7 @@ impl Synthesis {
     pub fn sample(&self, patch: Patch, i: usize, horizontal: bool) -> Option<Sample<'_>> {
         let (x, y) = (i % self.canvas.width, i / self.canvas.width);
         let source = &self.sources[patch.source as usize];
-        let (sx, sy) = self.canvas.source_coords(patch, source, x, y)?;
+        let (sx, sy) = self.source_coords(patch, x, y)?;
         let k = sy * source.width() + sx;
         Some(Sample {
             colour: source.image.pixel(sx, sy),
@@ -123,8 +132,55 @@ impl Synthesis {
         let (x, y) = (i % self.canvas.width, i / self.canvas.width);
         let source = &self.sources[patch.source as usize];
         let mask = self.seam_features.get(patch.source as usize)?;
-        let (sx, sy) = self.canvas.source_coords(patch, source, x, y)?;
+        let (sx, sy) = self.source_coords(patch, x, y)?;
         mask.get(sy * source.width() + sx).copied()
+    }
+
+    /// The source coordinates `patch` copies to output pixel (x, y), if it covers it.
+    #[inline]
+    #[must_use]
+    pub fn source_coords(&self, patch: Patch, x: usize, y: usize) -> Option<(usize, usize)> {
+        self.canvas
+            .source_coords(patch, self.patch_extent(patch.source as usize), x, y)
+    }
+
+    /// The size of the window of source `s` one placement uses: the source itself when within
+    /// `max_source_side` (see `source_window.rs`).
+    #[must_use]
+    pub fn window_extent(&self, s: usize) -> (usize, usize) {
+        let source = &self.sources[s];
+        window_extent(source.width(), source.height(), self.max_source_side)
+    }
+
+    /// The part of source `s` a patch uses: its window, or at most the output size when
+    /// wrapping (a larger patch would overlap itself).
+    #[must_use]
+    pub fn patch_extent(&self, s: usize) -> (usize, usize) {
+        let (ww, wh) = self.window_extent(s);
+        if self.canvas.wrap {
+            (ww.min(self.canvas.width), wh.min(self.canvas.height))
+        } else {
+            (ww, wh)
+        }
+    }
+
+    /// Draws the window of every source larger than `max_source_side` for the next placement
+    /// (uniformly where it fits, from the seeded generator); a source within the bound keeps
+    /// (0, 0) and draws nothing, so its results are those of the unbounded method.
+    pub fn draw_windows(&mut self) {
+        self.windows = (0..self.sources.len())
+            .map(|s| {
+                let source = &self.sources[s];
+                let (size, extent) = ((source.width(), source.height()), self.patch_extent(s));
+                draw_origin(&mut self.rng, size, extent, self.max_source_side)
+            })
+            .collect();
+    }
+
+    /// The window origin of source `s` for the current placement.
+    #[must_use]
+    pub fn window(&self, s: usize) -> (u32, u32) {
+        self.windows.get(s).copied().unwrap_or((0, 0))
     }
 
     /// The patch of a labelled pixel.
@@ -138,16 +194,8 @@ impl Synthesis {
     /// The footprint of `patch` in the output: the output pixels it covers, in source scan order.
     #[must_use]
     pub fn footprint(&self, patch: Patch) -> Vec<usize> {
-        let source = &self.sources[patch.source as usize];
         let (w, h) = (self.canvas.width as i64, self.canvas.height as i64);
-        let (sw, sh) = if self.canvas.wrap {
-            (
-                source.width().min(self.canvas.width),
-                source.height().min(self.canvas.height),
-            )
-        } else {
-            (source.width(), source.height())
-        };
+        let (sw, sh) = self.patch_extent(patch.source as usize);
         let mut pixels = Vec::with_capacity(sw * sh);
         for v in 0..sh as i64 {
             let mut y = i64::from(patch.ty) + v;

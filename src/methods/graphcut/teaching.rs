@@ -71,18 +71,7 @@ mod tests {
     #[test]
     fn views_follow_the_labels() {
         let mut canvas = Canvas::new(4, 2, 1, false).unwrap();
-        canvas.patches = vec![
-            Patch {
-                source: 0,
-                tx: 0,
-                ty: 0,
-            },
-            Patch {
-                source: 0,
-                tx: 2,
-                ty: 0,
-            },
-        ];
+        canvas.patches = vec![Patch::new(0, 0, 0), Patch::new(0, 2, 0)];
         canvas.label = vec![0, 0, 1, 1, 0, 0, 1, UNCOVERED];
         canvas.h_seam[1] = 2.0;
         canvas.h_seam[5] = 1.0;

@@ -18,8 +18,7 @@ fn assert_pixels_match_labels(s: &Synthesis) {
         let patch = s.canvas.patches[label as usize];
         let source = &s.sources[patch.source as usize];
         let (sx, sy) = s
-            .canvas
-            .source_coords(patch, source, i % w, i / w)
+            .source_coords(patch, i % w, i / w)
             .expect("the patch covers its pixels");
         assert_eq!(
             s.canvas.pixels.pixel(i % w, i / w),
@@ -54,16 +53,12 @@ fn the_cut_is_the_cheapest_labelling_including_old_seams() {
     };
     let mut s = Synthesis::new(&exemplar, options).unwrap();
     for (tx, ty) in [(0, 0), (8, 0), (0, 6), (9, 5), (5, 8), (14, 9), (10, 4)] {
-        s.place(Patch { source: 0, tx, ty }, &[], &[]).unwrap();
+        s.place(Patch::new(0, tx, ty), &[], &[]).unwrap();
     }
     assert_pixels_match_labels(&s);
     let mut rng = Rng::new(4);
     for _ in 0..12 {
-        let patch = Patch {
-            source: 0,
-            tx: rng.index(18) as i32 - 6,
-            ty: rng.index(14) as i32 - 6,
-        };
+        let patch = Patch::new(0, rng.index(18) as i32 - 6, rng.index(14) as i32 - 6);
         let before = s.clone_state();
         let [outside_before, border_before, _] = seam_energy_by_footprint(&s, patch);
         let placed = s.place(patch, &[], &[]).unwrap();
@@ -128,6 +123,8 @@ impl Synthesis {
             ssd: crate::solvers::fft_ssd::SsdSearch::new(),
             seam_features: self.seam_features.clone(),
             seam_feature_weight: self.seam_feature_weight,
+            max_source_side: self.max_source_side,
+            windows: self.windows.clone(),
         }
     }
 
@@ -188,11 +185,7 @@ fn a_surrounded_region_keeps_its_border() {
     while !session.step().unwrap().covered {}
     let mut s = session.synthesis().clone_state();
     let before = s.canvas.label.clone();
-    let patch = Patch {
-        source: 0,
-        tx: 16,
-        ty: 16,
-    };
+    let patch = Patch::new(0, 16, 16);
     let placed = s.place(patch, &[48 * 96 + 48], &[]).unwrap();
     assert!(placed.pixels_taken >= 1);
     assert_eq!(
@@ -322,10 +315,7 @@ fn matching_costs_equal_a_direct_area_normalised_ssd() {
                         {
                             continue;
                         }
-                        let (sx, sy) = s
-                            .canvas
-                            .source_coords(c.patch, &s.sources[0], x, y)
-                            .unwrap();
+                        let (sx, sy) = s.source_coords(c.patch, x, y).unwrap();
                         let a = s.canvas.pixels.pixel(x, y);
                         let b = s.sources[0].image.pixel(sx, sy);
                         sum += a
@@ -410,16 +400,7 @@ fn a_single_patch_splines_to_itself_and_transforms_add_sources() {
         ..Options::default()
     };
     let mut s = Synthesis::new(&exemplar, options).unwrap();
-    s.place(
-        Patch {
-            source: 0,
-            tx: 0,
-            ty: 0,
-        },
-        &[],
-        &[],
-    )
-    .unwrap();
+    s.place(Patch::new(0, 0, 0), &[], &[]).unwrap();
     let splined = s.splined().unwrap();
     assert!(
         splined
@@ -520,7 +501,7 @@ fn while_the_output_is_being_covered_the_cut_equals_the_stored_seam_energy() {
         };
         let mut s = Synthesis::new(&exemplar, options).unwrap();
         for (tx, ty) in PARTIAL_COVER {
-            let patch = Patch { source: 0, tx, ty };
+            let patch = Patch::new(0, tx, ty);
             let placed = s.place(patch, &[], &[]).unwrap();
             assert_pixels_match_labels(&s);
             let stored = stored_energy_under(&s, patch);
@@ -551,7 +532,7 @@ fn the_cut_is_not_biased_by_the_new_patch_brightness() {
     let mut b = Synthesis::new(&bright, options).unwrap();
     let (mut taken_dark, mut taken_bright) = (0, 0);
     for (tx, ty) in PARTIAL_COVER {
-        let patch = Patch { source: 0, tx, ty };
+        let patch = Patch::new(0, tx, ty);
         let (pa, pb) = (
             a.place(patch, &[], &[]).unwrap(),
             b.place(patch, &[], &[]).unwrap(),
@@ -588,18 +569,7 @@ fn the_seam_pays_for_features_the_patches_do_not_share() {
         ..Options::default()
     };
     let mut s = Synthesis::new(&ex, options).unwrap();
-    let (a, b) = (
-        Patch {
-            source: 0,
-            tx: 0,
-            ty: 0,
-        },
-        Patch {
-            source: 0,
-            tx: 1,
-            ty: 0,
-        },
-    );
+    let (a, b) = (Patch::new(0, 0, 0), Patch::new(0, 1, 0));
     let plain = s.seam_cost(5 * 24 + 5, 5 * 24 + 6, true, a, b);
     // A vertical curve at source column 5: patch a shows it at output x = 5, patch b at x = 6.
     s.seam_features = vec![(0..256).map(|i| i % 16 == 5).collect()];
@@ -615,29 +585,116 @@ fn the_seam_pays_for_features_the_patches_do_not_share() {
     assert_eq!(s.feature_at(b, 5 * 24), None);
 }
 
-/// A photo used whole as the exemplar is refused by the constructor, not by a later step, and
-/// the message says what to do; random placement, which does not search, still accepts it.
+/// A photo larger than the bound (`source_window.rs`) is accepted by every placement, and each
+/// placement reads only a bounded window of it, drawn afresh: the patch, the candidates and the
+/// FFT search are those of a `MAX_SOURCE_SIDE` exemplar, while the windows move over the photo.
 #[test]
-fn an_exemplar_too_large_to_search_is_refused_up_front() {
-    let photo = Image::new(3000, 2000, 1).unwrap();
-    let options = |placement| Options {
-        output_width: 256,
-        output_height: 256,
-        placement,
-        ..Options::default()
-    };
-    for placement in [Placement::EntirePatch, Placement::SubPatch] {
-        let message = Synthesis::new(&photo, options(placement))
-            .err()
-            .expect("refused")
-            .to_string();
-        assert!(
-            message.contains("3000x2000") && message.contains("resized"),
-            "{message}"
-        );
+fn a_large_exemplar_is_searched_through_bounded_windows() {
+    use super::placement::SearchWindow;
+    use super::source_window::MAX_SOURCE_SIDE;
+    use crate::solvers::fft_ssd::transform_size;
+    let photo = Image::from_fn(1500, 1200, 3, |x, y, c| {
+        (((x * 7 + y * 3 + c * 5) % 23) as f32 / 23.0 + ((x / 40 + y / 30) % 3) as f32) / 3.0
+    })
+    .unwrap();
+    let bound = (MAX_SOURCE_SIDE, MAX_SOURCE_SIDE);
+    for (placement, tileable) in [
+        (Placement::EntirePatch, false),
+        (Placement::SubPatch, false),
+        (Placement::Random, false),
+        (Placement::SubPatch, true),
+    ] {
+        let mut session = Session::new(
+            &photo,
+            Options {
+                output_width: 96,
+                output_height: 96,
+                placement,
+                tileable,
+                refinement_patches: 3,
+                ..Options::default()
+            },
+        )
+        .unwrap();
+        assert_eq!(session.synthesis().window_extent(0), bound);
+        let mut steps = 0;
+        loop {
+            // What the step will search: the candidates of one window, and a bounded transform.
+            let s = session.synthesis();
+            let region = s.error_region();
+            let extent = s.patch_extent(0);
+            assert!(extent.0 <= MAX_SOURCE_SIDE && extent.1 <= MAX_SOURCE_SIDE);
+            let window = SearchWindow::around(region, extent, (96, 96), tileable);
+            let (nx, ny) = transform_size((window.width, window.height), extent, window.boundary);
+            assert!(
+                nx <= 3 * MAX_SOURCE_SIDE && ny <= 3 * MAX_SOURCE_SIDE,
+                "{nx}x{ny}"
+            );
+            let event = session.step().unwrap();
+            steps += 1;
+            let patch = event.patch.expect("a patch is placed");
+            let (wx, wy) = (patch.window.0 as usize, patch.window.1 as usize);
+            assert!(wx + extent.0 <= 1500 && wy + extent.1 <= 1200, "{patch:?}");
+            assert_eq!((event.rect.2, event.rect.3), extent);
+            if event.done {
+                break;
+            }
+            assert!(steps < 50, "{placement:?} does not finish");
+        }
+        let s = session.synthesis();
+        assert_pixels_match_labels(s);
+        assert!(s.canvas.is_covered());
+        let windows: std::collections::HashSet<(u32, u32)> =
+            s.canvas.patches.iter().map(|p| p.window).collect();
+        assert!(windows.len() > 1, "{placement:?}: the window never moved");
     }
-    assert!(Synthesis::new(&photo, options(Placement::Random)).is_ok());
-    // A 1024x1024 exemplar is accepted: the search window stops at the output's border.
-    let large = Image::new(1024, 1024, 1).unwrap();
-    assert!(Synthesis::new(&large, options(Placement::EntirePatch)).is_ok());
+}
+
+/// An exemplar within the bound is its own window: the results are exactly those of the method
+/// without the bound (every patch the whole exemplar), for every placement, wrapping or not.
+#[test]
+fn small_exemplars_are_unchanged_by_the_source_bound() {
+    let exemplar = sample("tiles_64");
+    for (placement, tileable) in [
+        (Placement::EntirePatch, false),
+        (Placement::SubPatch, false),
+        (Placement::Random, false),
+        (Placement::EntirePatch, true),
+    ] {
+        let run = |max_source_side: usize| {
+            let mut session = Session::new(
+                &exemplar,
+                Options {
+                    output_width: 96,
+                    output_height: 80,
+                    placement,
+                    tileable,
+                    refinement_patches: 6,
+                    ..Options::default()
+                },
+            )
+            .unwrap();
+            session.synthesis_mut().max_source_side = max_source_side;
+            while !session.step().unwrap().done {}
+            let s = session.synthesis();
+            assert!(s.canvas.patches.iter().all(|p| p.window == (0, 0)));
+            (s.canvas.patches.clone(), session.output().unwrap())
+        };
+        assert_eq!(run(super::source_window::MAX_SOURCE_SIDE), run(usize::MAX));
+    }
+}
+
+/// Used whole (no bound), a photo would need a transform larger than the FFT search allows; that
+/// is still refused before any step, with a message saying what to do.
+#[test]
+fn an_exemplar_used_whole_that_is_too_large_to_search_is_refused() {
+    let photo = Image::new(3000, 2000, 1).unwrap();
+    let mut s = Synthesis::new(&photo, Options::default()).expect("bounded: accepted");
+    assert!(s.check_search_size().is_ok());
+    s.max_source_side = usize::MAX;
+    let message = s.check_search_size().unwrap_err().to_string();
+    assert!(
+        message.contains("3000x2000") && message.contains("resized"),
+        "{message}"
+    );
 }
