@@ -84,7 +84,7 @@ impl WorkingSet {
             return Ok(());
         }
         let mut parts: Vec<_> = self.parts.iter().filter(|p| p.1 >= MIB).collect();
-        parts.sort_by(|a, b| b.1.cmp(&a.1));
+        parts.sort_by_key(|p| std::cmp::Reverse(p.1));
         let detail: Vec<String> = parts
             .iter()
             .take(4)
