@@ -548,7 +548,9 @@ impl LayerDesign {
     }
 
     /// Makes the next row of patches. Returns `{ kind: 'row' | 'done', done, row, rows, patches,
-    /// totalPatches, ssd, totalSsd, positionsSearched, pixelsCompared }`.
+    /// totalPatches, ssd, totalSsd, positionsSearched, pixelsCompared, largestSearch }`
+    /// (`largestSearch`: the most positions one patch's search computed, bounded by the search
+    /// window of a layer larger than 512 a side).
     pub fn step(&mut self) -> JsResult<JsValue> {
         if self.design.is_none() {
             if self.layers.is_empty() {
@@ -573,6 +575,7 @@ impl LayerDesign {
             ("totalSsd", e.total_ssd.into()),
             ("positionsSearched", (e.positions_searched as f64).into()),
             ("pixelsCompared", (e.pixels_compared as f64).into()),
+            ("largestSearch", (e.largest_search as f64).into()),
         ]))
     }
 

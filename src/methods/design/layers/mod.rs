@@ -10,7 +10,9 @@
 //!   Liang et al. 2001): each new `patch_size` square overlaps what is made by a boundary zone of
 //!   `overlap` pixels, and is chosen from its layer by the SSD over that zone (the "known" part of
 //!   an image-completion step).
-//! - **Search.** Exhaustive (every position, as [29]) or by the quadtree pyramid (`qtp`).
+//! - **Search.** Exhaustive (every position, as [29]) or by the quadtree pyramid (`qtp`). A layer
+//!   larger than 512 on a side (a photo) is searched, for each patch, within a 512-sided window
+//!   of it drawn at random (`window`), so a patch costs what it costs with a 512x512 layer.
 //! - **Choice.** Every candidate within `(1 + tolerance)` of the best is acceptable; one is
 //!   picked by the logistic map (the paper's chaotic variation), by the seeded random generator,
 //!   or the best is taken.
@@ -20,6 +22,7 @@
 pub mod logistic;
 pub mod qtp;
 mod session;
+pub mod window;
 
 pub use session::{
     Layer, LayerDesign, LayerEvent, LayerOptions, LayerPlacement, LayerSearch, MAX_LAYERS,

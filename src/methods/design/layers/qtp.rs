@@ -111,6 +111,8 @@ pub struct SearchCount {
     pub positions: usize,
     /// Pixel differences those SSDs took: the work done.
     pub pixels: usize,
+    /// The most candidate positions one search computed: what bounding the searched area bounds.
+    pub largest: usize,
 }
 
 impl SearchTexture {
@@ -174,6 +176,7 @@ impl SearchTexture {
         }
         count.positions += all.len();
         count.pixels += all.len() * active.len();
+        count.largest = count.largest.max(all.len());
         all.sort_by(|a, b| a.0.total_cmp(&b.0));
         all
     }
@@ -186,6 +189,7 @@ impl SearchTexture {
         count: &mut SearchCount,
     ) -> Vec<(f32, usize, usize)> {
         let keep = keep.max(1);
+        let before = count.positions;
         // The query's pyramid, as deep as the texture's (and while the mask keeps some pixels).
         let mut queries = vec![Query {
             size: query.size,
@@ -245,6 +249,7 @@ impl SearchTexture {
             truncate_best(&mut next, keep);
             best = next;
         }
+        count.largest = count.largest.max(count.positions - before);
         best
     }
 }

@@ -2,6 +2,7 @@
 
 use super::logistic::Logistic;
 use super::qtp::{Query, SearchCount, SearchTexture};
+use super::window::{MAX_LAYER_SIDE, draw_window, is_windowed};
 use crate::core::error::check_size;
 use crate::core::{Error, Image, Result, Rng};
 use crate::methods::design::deform::{Deformation, deform};
@@ -144,14 +145,23 @@ pub struct LayerEvent {
     pub positions_searched: usize,
     /// Pixel differences those searches computed: the work done.
     pub pixels_compared: usize,
+    /// The most candidate positions one patch's search computed so far: bounded by the search
+    /// window for layers larger than [`MAX_LAYER_SIDE`] a side (see `window.rs`).
+    pub largest_search: usize,
     pub done: bool,
 }
 
 /// A layer-based design in progress.
 pub struct LayerDesign {
     options: LayerOptions,
-    layers: Vec<SearchTexture>,
+    /// Each layer's pyramid, built once; `None` for a layer larger than `max_side` a side,
+    /// searched through a window drawn for each patch (`window.rs`).
+    layers: Vec<Option<SearchTexture>>,
     textures: Vec<Image>,
+    /// The largest side of a layer searched whole ([`MAX_LAYER_SIDE`]).
+    max_side: usize,
+    /// Draws the search windows of large layers (nothing for layers within the bound).
+    window_rng: Rng,
     layout: Vec<u8>,
     output: Image,
     filled: Vec<bool>,
@@ -169,6 +179,18 @@ pub struct LayerDesign {
 impl LayerDesign {
     /// Validates everything; `layout` holds one layer index per output pixel.
     pub fn new(layers: &[Layer], layout: &[u8], options: LayerOptions) -> Result<Self> {
+        Self::with_max_side(layers, layout, options, MAX_LAYER_SIDE)
+    }
+
+    /// As [`LayerDesign::new`], searching layers of at most `max_side` a side whole and larger
+    /// ones through `max_side`-sided windows (`usize::MAX`: every layer whole, the unbounded
+    /// method).
+    pub(crate) fn with_max_side(
+        layers: &[Layer],
+        layout: &[u8],
+        options: LayerOptions,
+        max_side: usize,
+    ) -> Result<Self> {
         options.validate()?;
         if layers.is_empty() || layers.len() > MAX_LAYERS {
             return Err(Error::InvalidParameter {
@@ -224,7 +246,10 @@ impl LayerDesign {
         )?;
         let searches = textures
             .iter()
-            .map(|t| SearchTexture::new(t, options.patch_size))
+            .map(|t| {
+                (!is_windowed(t.width(), t.height(), max_side))
+                    .then(|| SearchTexture::new(t, options.patch_size))
+            })
             .collect();
         let step = options.patch_size - options.zone();
         Ok(LayerDesign {
@@ -234,6 +259,8 @@ impl LayerDesign {
             filled: vec![false; w * h],
             layers: searches,
             textures,
+            max_side,
+            window_rng: Rng::new(options.seed ^ 0x5ea7_c4ed_0b1d),
             layout: layout.to_vec(),
             row: 0,
             logistic: Logistic::new(options.seed),
@@ -290,6 +317,7 @@ impl LayerDesign {
             total_ssd: self.total_ssd,
             positions_searched: self.count.positions,
             pixels_compared: self.count.pixels,
+            largest_search: self.count.largest,
             done: self.is_done(),
         };
         self.last = Some(event);
@@ -315,8 +343,19 @@ impl LayerDesign {
                 .mask
                 .extend_from_slice(&self.filled[(py + y) * w + px..(py + y) * w + px + p]);
         }
-        let search = &self.layers[layer];
+        let (tw, th) = (self.textures[layer].width(), self.textures[layer].height());
         let (sx, sy, cost) = if query.mask.iter().any(|&m| m) {
+            // A layer within the bound is searched whole; a larger one within a window drawn
+            // for this patch, the chosen position offset back into the layer (`window.rs`).
+            let windowed;
+            let (search, (ox, oy)) = if let Some(whole) = &self.layers[layer] {
+                (whole, (0, 0))
+            } else {
+                let (origin, window) =
+                    draw_window(&mut self.window_rng, &self.textures[layer], self.max_side)?;
+                windowed = SearchTexture::new(&window, p);
+                (&windowed, origin)
+            };
             let found = match self.options.search {
                 LayerSearch::Qtp => search.qtp(&query, self.options.keep, &mut self.count),
                 LayerSearch::Exhaustive => search.exhaustive(&query, &mut self.count),
@@ -324,10 +363,10 @@ impl LayerDesign {
             let limit = found[0].0 * (1.0 + self.options.tolerance) + 1e-6;
             let acceptable = found.iter().take_while(|f| f.0 <= limit).count();
             let pick = self.pick(acceptable);
-            (found[pick].1, found[pick].2, found[pick].0)
+            (found[pick].1 + ox, found[pick].2 + oy, found[pick].0)
         } else {
             // Nothing to match yet: any position.
-            let (nx, ny) = (search.width() - p + 1, search.height() - p + 1);
+            let (nx, ny) = (tw - p + 1, th - p + 1);
             let pick = self.pick(nx * ny);
             (pick % nx, pick / nx, 0.0)
         };
@@ -452,6 +491,122 @@ mod tests {
         };
         let (img, _) = run(&layers, &layout, opts);
         assert!(img.pixel(10, 50)[0] < 0.4 && img.pixel(150, 50)[0] > 0.7);
+    }
+
+    /// FNV-1a over the output's f32 bits.
+    fn checksum(img: &Image) -> u64 {
+        img.data().iter().fold(0xcbf2_9ce4_8422_2325, |h, v| {
+            (h ^ u64::from(v.to_bits())).wrapping_mul(0x0100_0000_01b3)
+        })
+    }
+
+    #[test]
+    fn small_layers_give_the_outputs_they_gave_before_the_window_bound() {
+        // Checksums recorded before layers larger than MAX_LAYER_SIDE were searched through
+        // windows: layers within the bound must give byte-identical outputs.
+        let two = vec![
+            Layer {
+                texture: sample("gravel_64"),
+                deformations: vec![],
+            },
+            Layer {
+                texture: sample("tiles_128"),
+                deformations: vec![Deformation::Mirror],
+            },
+        ];
+        let cases: Vec<(Vec<Layer>, LayerOptions)> = vec![
+            (one_layer("tiles_128"), LayerOptions::default()),
+            (
+                one_layer("gravel_64"),
+                LayerOptions {
+                    output_width: 150,
+                    output_height: 120,
+                    patch_size: 24,
+                    placement: LayerPlacement::Random,
+                    seed: 7,
+                    ..LayerOptions::default()
+                },
+            ),
+            (
+                one_layer("tiles_128"),
+                LayerOptions {
+                    output_width: 128,
+                    output_height: 96,
+                    search: LayerSearch::Exhaustive,
+                    placement: LayerPlacement::Best,
+                    ..LayerOptions::default()
+                },
+            ),
+            (
+                two,
+                LayerOptions {
+                    output_width: 160,
+                    output_height: 96,
+                    patch_size: 24,
+                    ..LayerOptions::default()
+                },
+            ),
+        ];
+        let sums: Vec<u64> = cases
+            .into_iter()
+            .map(|(layers, o)| {
+                let (w, h) = (o.output_width, o.output_height);
+                let layout: Vec<u8> = (0..w * h)
+                    .map(|i| u8::from(layers.len() > 1 && i % w >= w / 2))
+                    .collect();
+                let (img, _) = run(&layers, &layout, o.clone());
+                // ... and the unbounded method (every layer searched whole) agrees.
+                let mut whole =
+                    LayerDesign::with_max_side(&layers, &layout, o, usize::MAX).unwrap();
+                while !whole.step().unwrap().done {}
+                assert_eq!(whole.image(), &img);
+                checksum(&img)
+            })
+            .collect();
+        assert_eq!(
+            sums,
+            [
+                0x920b_a003_7530_a6cc,
+                0x6726_58b9_6364_562d,
+                0x5e7f_7234_6a9e_b9e6,
+                0xfdf9_e122_421d_c6ba
+            ]
+        );
+    }
+
+    #[test]
+    fn a_photo_sized_layer_is_searched_within_bounded_windows() {
+        // 1200x900: tiles_128 repeated under a slow brightness ramp, so no two tiles are equal.
+        let tile = sample("tiles_128");
+        let photo = Image::from_fn(1200, 900, tile.channels(), |x, y, c| {
+            tile.pixel(x % 128, y % 128)[c] * (0.7 + 0.3 * (x + y) as f32 / 2100.0)
+        })
+        .unwrap();
+        let layers = vec![Layer {
+            texture: photo,
+            deformations: vec![],
+        }];
+        let opts = LayerOptions {
+            output_width: 112,
+            output_height: 96,
+            ..LayerOptions::default()
+        };
+        let (img, last) = run(&layers, &vec![0; 112 * 96], opts.clone());
+        assert_eq!(last.patches, last.total_patches);
+        assert!(img.data().iter().all(|v| v.is_finite()));
+        // QTP over a 512x512 window with patches of 32: the exhaustive top level is the half
+        // resolution (256 - 16 + 1)^2 positions, the descent at most 16 children of each of the
+        // 32 kept; over the whole layer the top level alone would be (600 - 16 + 1) x
+        // (450 - 16 + 1).
+        let window_bound = 241 * 241 + 16 * 32;
+        assert!(
+            last.largest_search > 0 && last.largest_search <= window_bound,
+            "{last:?}"
+        );
+        assert!(last.largest_search * 4 < 585 * 435);
+        assert!(last.positions_searched <= last.total_patches * window_bound);
+        // Seeded: the same windows and the same output again.
+        assert_eq!(run(&layers, &vec![0; 112 * 96], opts).0, img);
     }
 
     #[test]
