@@ -2,9 +2,10 @@
 // per case (wasm memory never shrinks, so a run's peak is the memory's size after it).
 //   node scripts/bench-scaling.mjs [--outputs 256,512,1024,2048,4096] [--exemplars 64,128,256,512,1024,3000]
 //                                  [--methods optimization,graphcut,subpatch,features,flow]
-//                                  [--big optimization,graphcut] [--svg www/scaling.svg]
-// Output sweep: the 128x128 www/samples/tiles_128.png to each square output size (4096x4096 only
-// for the `--big` methods: the others take minutes there). Exemplar sweep: gravel (the 512x512
+//                                  [--svg www/scaling.svg]
+// Output sweep: the 128x128 www/samples/tiles_128.png to each square output size, up to each
+// method's LARGEST (4096 for texture optimisation and entire-patch graph cut, 2048 for
+// sub-patch, 1024 for feature-guided synthesis and flow: larger cases take minutes each). Exemplar sweep: gravel (the 512x512
 // ../shared/textures/gravel_full.png, shrunk with Exemplar.resized below 512 and mirror-tiled
 // above it) to a 256x256 output. Flow animation is timed per frame after the first (frames per
 // second over 4 frames); every other method runs to done. Prints two markdown tables (total
@@ -27,6 +28,8 @@ const METHODS = {
   flow: 'flow animation (per frame)',
 };
 const FLOW_FRAMES = 4;
+/** The largest output each method runs at (above it, minutes per case on a 2-core machine). */
+const LARGEST = { optimization: 4096, graphcut: 4096, subpatch: 2048, features: 1024, flow: 1024 };
 
 /** Builds the exemplar of a case: tiles_128, or gravel at `side` pixels. */
 function exemplarOf(lib, side) {
@@ -91,7 +94,6 @@ if (args.case) {
 const outputs = (args.outputs ?? '256,512,1024,2048,4096').split(',').map(Number);
 const exemplars = (args.exemplars ?? '64,128,256,512,1024,3000').split(',').map(Number);
 const methods = (args.methods ?? Object.keys(METHODS).join(',')).split(',');
-const big = new Set((args.big ?? 'optimization,graphcut').split(','));
 const script = fileURLToPath(import.meta.url);
 
 function measure(method, size, side) {
@@ -118,7 +120,7 @@ console.log('|---|---|---:|---:|---:|---:|');
 for (const method of methods) {
   results[method] = [];
   for (const size of outputs) {
-    const r = size >= 4096 && !big.has(method) ? null : measure(method, size, 0);
+    const r = size > LARGEST[method] ? null : measure(method, size, 0);
     if (r && !r.error) results[method].push({ pixels: size * size, ms: r.fps != null ? 1000 / r.fps : r.ms });
     console.log(`| ${METHODS[method]} | ${size}x${size} | ${size * size} ${cell(r)}`);
   }

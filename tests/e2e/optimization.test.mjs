@@ -82,3 +82,26 @@ test('reset clears the run and a bad option shows an error', async () => {
   await page.waitForSelector('#error:not([hidden])');
   assert.match(await page.textContent('#error'), /invalid r: must be in \(0, 2\], got 5/);
 });
+
+test('a large output splits iterations into parts the readout names', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-sample="tiles_128"]');
+  await page.waitForSelector('body[data-exemplar="tiles 128×128"]');
+  await page.fill('#out-width', '1024');
+  await page.fill('#out-height', '1024');
+  await page.dispatchEvent('#out-height', 'change');
+  // Iterations at 1024x1024 take longer than a step's 60 ms from the second level on.
+  let kind = '';
+  for (let n = 1; n <= 60 && kind !== 'part'; n++) {
+    await page.click('#step');
+    await page.waitForSelector(`body[data-steps="${n}"]`, { timeout: 30_000 });
+    kind = await page.getAttribute('body', 'data-step-kind');
+  }
+  assert.equal(kind, 'part', 'some step stops inside an iteration');
+  assert.match(
+    await page.textContent('#to-readout'),
+    /iteration \d+ \((first M-step|E-step|M-step), \d+% of the iteration\)/,
+  );
+  await page.screenshot({ path: `${RESULTS}optimization-part-1024.png` });
+  assert.deepEqual(errors, []);
+});

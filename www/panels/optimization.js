@@ -237,11 +237,21 @@ export function createPanel(ui) {
       draw();
       plot();
       const constraint = paint ? ` · constraint error ${session.getter('constraintEnergy').toPrecision(3)}` : '';
+      // Large outputs split an iteration over several steps (kind 'part'): say how far it is.
+      const PHASES = { 'first-match': 'first M-step', 'e-step': 'E-step', 'm-step': 'M-step' };
+      const progress = event.kind === 'part'
+        ? ` (${PHASES[event.phase] ?? event.phase}, ${Math.round(event.progress * 100)}% of the iteration)`
+        : '';
+      const figures = event.kind === 'part'
+        ? ''
+        : ` · energy ${event.energy.toPrecision(4)} · ${event.changed} matches changed`;
       ui.$('to-readout').textContent =
         `level ${event.level + 1}/${event.levelCount} · resolution 1/${event.scale} · ` +
-        `neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration} · ` +
-        `energy ${event.energy.toPrecision(4)} · ${event.changed} matches changed${constraint}`;
+        `neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration}${progress}` +
+        `${figures}${constraint}`;
       document.body.dataset.iterations = String(event.totalIterations);
+      document.body.dataset.steps = String(Number(document.body.dataset.steps ?? 0) + 1);
+      document.body.dataset.stepKind = event.kind;
       if (event.done) {
         showQuality(ui.$('to-quality'), ui.exemplar(), session).then(() => {
           document.body.dataset.optimizationDone = 'true';
@@ -255,6 +265,7 @@ export function createPanel(ui) {
       paint = null;
       delete document.body.dataset.optimizationDone;
       document.body.dataset.iterations = '0';
+      document.body.dataset.steps = '0';
       ui.$('to-readout').textContent = 'press Run or Step';
       ui.$('to-quality').textContent = '';
       ui.$('to-legend').textContent = '';

@@ -343,10 +343,11 @@ impl Session {
             last.kind = EventKind::Done;
             return Ok(last);
         }
-        if self.entered != Some(self.level) {
+        let entering = self.entered != Some(self.level);
+        if entering {
             self.enter_level()?;
         }
-        let Some(changed) = self.advance()? else {
+        let Some(changed) = self.advance(entering)? else {
             return Ok(self.part_event());
         };
         let kind = if std::mem::take(&mut self.new_level) {
@@ -479,7 +480,7 @@ impl Session {
     /// first), E-step with IRLS weights, M-step. With split iterations (see [`SPLIT_PIXELS`])
     /// it stops once the step's time is up, between chunks. Returns how many matches changed in
     /// the final M-step once the iteration is done, else None (the next step resumes it).
-    fn advance(&mut self) -> Result<Option<usize>> {
+    fn advance(&mut self, entering: bool) -> Result<Option<usize>> {
         let lv = self.levels[self.level];
         let exemplar = &self.exemplars[lv.octave];
         let solver = self.solver.as_mut().expect("level entered");
@@ -518,6 +519,12 @@ impl Session {
                     } else {
                         Stage::EStep
                     };
+                    if entering && split.is_some() {
+                        // Entering a level (its exemplar neighbourhoods, the up-sampled
+                        // output, carried matches, the first M-step's feature map) is a
+                        // step of its own on a large output.
+                        return Ok(None);
+                    }
                     continue;
                 }
                 Stage::FirstMatch | Stage::MStep => {
