@@ -168,16 +168,21 @@ impl Constraint {
         let target = self.target.data();
         for dy in 0..size {
             let y = if wrap { (y0 + dy) % h } else { y0 + dy };
-            for dx in 0..size {
-                let x = if wrap { (x0 + dx) % w } else { x0 + dx };
-                let p = y * w + x;
-                let lm = self.lambda * self.mask[p];
-                if lm > 0.0 {
-                    let base = (dy * size + dx) * dims;
-                    for k in 0..c {
-                        let q = &mut query[base + k];
-                        *q = (*q + lm * target[p * c + k]) / (1.0 + lm);
-                        weights[base + k] *= 1.0 + lm;
+            // The row as at most two runs of contiguous pixels (the second when it wraps past
+            // the right border): this runs once per node visit of every M-step sweep, so no
+            // division per pixel.
+            let first = if wrap { size.min(w - x0) } else { size };
+            for (x, dx0, len) in [(x0, 0, first), (0, first, size - first)] {
+                let row = y * w + x;
+                for (j, &m) in self.mask[row..row + len].iter().enumerate() {
+                    let lm = self.lambda * m;
+                    if lm > 0.0 {
+                        let (p, base) = (row + j, (dy * size + dx0 + j) * dims);
+                        for k in 0..c {
+                            let q = &mut query[base + k];
+                            *q = (*q + lm * target[p * c + k]) / (1.0 + lm);
+                            weights[base + k] *= 1.0 + lm;
+                        }
                     }
                 }
             }
@@ -270,6 +275,39 @@ mod tests {
         let offset = direct(0.0) - squared(0.0);
         for v in [0.2, 0.5, 1.0] {
             assert!((direct(v) - squared(v) - offset).abs() < 1e-5);
+        }
+    }
+
+    #[test]
+    fn queries_are_constrained_pixel_by_pixel_also_across_the_wrap() {
+        // Against a direct per-pixel loop (wrapped coordinates by modulo), on a 7x5 target
+        // with a partial mask, neighbourhoods of 3 with 2 values per pixel (colour + one more).
+        let (w, h, size, dims) = (7usize, 5usize, 3usize, 2usize);
+        let target = Image::from_fn(w, h, 1, |x, y, _| (x * 5 + y) as f32 / 40.0).unwrap();
+        let mask: Vec<f32> = (0..w * h).map(|i| [0.0, 0.5, 1.0][i % 3]).collect();
+        let lambda = 2.0;
+        let constraint = SoftConstraints::new(target.clone(), mask.clone(), lambda)
+            .unwrap()
+            .at_size(w, h);
+        for (x0, y0, wrap) in [(0, 0, false), (4, 2, false), (6, 4, true), (5, 3, true)] {
+            let base: Vec<f32> = (0..size * size * dims).map(|i| i as f32 * 0.01).collect();
+            let (mut query, mut weights) = (base.clone(), vec![0.5; base.len()]);
+            constraint.apply_to_query(x0, y0, size, dims, wrap, &mut query, &mut weights);
+            for dy in 0..size {
+                for dx in 0..size {
+                    let (x, y) = ((x0 + dx) % w, (y0 + dy) % h);
+                    let lm = lambda * mask[y * w + x];
+                    let i = (dy * size + dx) * dims;
+                    let want = (base[i] + lm * target.pixel(x, y)[0]) / (1.0 + lm);
+                    assert!(
+                        (query[i] - want).abs() < 1e-6,
+                        "({x0}, {y0}) at ({dx}, {dy})"
+                    );
+                    assert!((weights[i] - 0.5 * (1.0 + lm)).abs() < 1e-6);
+                    // Values past the colour are left alone.
+                    assert_eq!((query[i + 1], weights[i + 1]), (base[i + 1], 0.5));
+                }
+            }
         }
     }
 }
