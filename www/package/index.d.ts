@@ -87,6 +87,8 @@ export type Search = 'patchmatch' | 'kmeans-tree' | 'exact';
 
 /** Options of `TextureOptimization` (Kwatra et al. 2005). Unknown keys and impossible values throw. */
 export interface TextureOptimizationOptions {
+  /** Memory budget of the session in MiB (16 to 3584, default 1024): the constructor refuses a size whose estimated working set is larger. */
+  memoryBudgetMiB?: number;
   /** Output width in pixels. Default: 256. */
   outputWidth?: number;
   /** Output height in pixels. Default: 256. */
@@ -162,6 +164,8 @@ export interface NeighbourhoodField {
 export class TextureOptimization implements Steppable<TextureOptimizationEvent> {
   /** @throws {TexsynthError} unknown option keys, impossible values (named in the message). */
   constructor(exemplar: Exemplar, options?: TextureOptimizationOptions);
+  /** The estimated peak working set in bytes (what the memory budget is checked against). */
+  readonly memoryEstimate: number;
   free(): void;
   [Symbol.dispose](): void;
   [Symbol.iterator](): Iterator<TextureOptimizationEvent>;
@@ -200,6 +204,8 @@ export class TextureOptimization implements Steppable<TextureOptimizationEvent> 
 
 /** Options of `GraphcutTextures` (Kwatra et al. 2003). Unknown keys and impossible values throw. */
 export interface GraphcutTexturesOptions {
+  /** Memory budget of the session in MiB (16 to 3584, default 1024): the constructor refuses a size whose estimated working set is larger. */
+  memoryBudgetMiB?: number;
   /** Default: 256. */
   outputWidth?: number;
   /** Default: 256. */
@@ -251,6 +257,8 @@ export interface GraphcutTexturesEvent {
 export class GraphcutTextures implements Steppable<GraphcutTexturesEvent> {
   /** @throws {TexsynthError} unknown option keys, impossible values. */
   constructor(exemplar: Exemplar, options?: GraphcutTexturesOptions);
+  /** The estimated peak working set in bytes (what the memory budget is checked against). */
+  readonly memoryEstimate: number;
   free(): void;
   [Symbol.dispose](): void;
   [Symbol.iterator](): Iterator<GraphcutTexturesEvent>;
@@ -329,6 +337,8 @@ export type Flow = FlowComponent | { components: FlowComponent[] } | Float32Arra
 
 /** Options of `FlowAnimation` (Kwatra et al. 2005, section 4.1). */
 export interface FlowAnimationOptions {
+  /** Memory budget of the session in MiB (16 to 3584, default 1024): the constructor refuses a size whose estimated working set is larger. */
+  memoryBudgetMiB?: number;
   /** Default: 128. */
   outputWidth?: number;
   /** Default: 128. */
@@ -374,6 +384,8 @@ export interface FlowAnimationEvent {
 export class FlowAnimation implements Steppable<FlowAnimationEvent> {
   /** @throws {TexsynthError} unknown keys, bad flow fields (named by pixel or size). */
   constructor(exemplar: Exemplar, options?: FlowAnimationOptions);
+  /** The estimated peak working set in bytes (what the memory budget is checked against). */
+  readonly memoryEstimate: number;
   free(): void;
   [Symbol.dispose](): void;
   [Symbol.iterator](): Iterator<FlowAnimationEvent>;
@@ -427,6 +439,8 @@ export function deformationSet(exemplar: Exemplar, ranges: DeformationRanges): {
 
 /** Options of `makeTileable` and `TileableSession`. */
 export interface TileableOptions {
+  /** Memory budget of the session in MiB (16 to 3584, default 1024): the constructor refuses a size whose estimated working set is larger. */
+  memoryBudgetMiB?: number;
   /** Default: a sixth of the width, at most 64. */
   overlapX?: number;
   /** Default: a sixth of the height, at most 64. */
@@ -446,6 +460,8 @@ export interface TileableEvent {
 /** Making an image cyclic one graph cut per step. */
 export class TileableSession implements Steppable<TileableEvent> {
   constructor(exemplar: Exemplar, options?: TileableOptions);
+  /** The estimated peak working set in bytes (what the memory budget is checked against). */
+  readonly memoryEstimate: number;
   free(): void;
   [Symbol.dispose](): void;
   [Symbol.iterator](): Iterator<TileableEvent>;
@@ -461,6 +477,8 @@ export class TileableSession implements Steppable<TileableEvent> {
 
 /** Options of `TextureBrush` (local deformation, eqs. 1-3). */
 export interface TextureBrushOptions {
+  /** Memory budget of the session in MiB (16 to 3584, default 1024): the constructor refuses a size whose estimated working set is larger. */
+  memoryBudgetMiB?: number;
   /** Weight of the brushed-pixel term. Default: 1000. */
   nu?: number;
   /** Default: 0.5. */
@@ -479,6 +497,8 @@ export interface BrushStroke {
 /** Local deformation with a brush; undoable. */
 export class TextureBrush {
   constructor(base: Exemplar, options?: TextureBrushOptions);
+  /** The estimated peak working set in bytes (what the memory budget is checked against). */
+  readonly memoryEstimate: number;
   free(): void;
   [Symbol.dispose](): void;
   stroke(reference: Exemplar, mask: Bytes, dx: number, dy: number): BrushStroke;
@@ -493,6 +513,8 @@ export class TextureBrush {
 
 /** Options of `LayerDesign` (fast layer-based design). */
 export interface LayerDesignOptions {
+  /** Memory budget of the session in MiB (16 to 3584, default 1024): the constructor refuses a size whose estimated working set is larger. */
+  memoryBudgetMiB?: number;
   /** Default: 360. */
   outputWidth?: number;
   /** Default: 360. */
@@ -515,9 +537,13 @@ export interface LayerDesignOptions {
 export interface LayerDesignEvent {
   kind: 'row' | 'done'; done: boolean; row: number; rows: number; patches: number;
   totalPatches: number; ssd: number; totalSsd: number; positionsSearched: number; pixelsCompared: number;
+  /** The most positions one patch's search computed (bounded for layers over 512 a side). */
+  largestSearch: number;
 }
 export class LayerDesign implements Steppable<LayerDesignEvent> {
   constructor(options?: LayerDesignOptions);
+  /** The estimated peak working set in bytes (what the memory budget is checked against). */
+  readonly memoryEstimate: number;
   free(): void;
   [Symbol.dispose](): void;
   [Symbol.iterator](): Iterator<LayerDesignEvent>;
@@ -562,6 +588,8 @@ export function detectFeatures(exemplar: Exemplar, options?: DetectFeaturesOptio
 
 /** Options of `FeatureSynthesis`. */
 export interface FeatureSynthesisOptions extends DetectFeaturesOptions {
+  /** Memory budget of the session in MiB (16 to 3584, default 1024): the constructor refuses a size whose estimated working set is larger. */
+  memoryBudgetMiB?: number;
   /** Default: 256. */
   outputWidth?: number;
   /** Default: 256. */
@@ -602,6 +630,8 @@ export interface FeatureSynthesisEvent {
 export interface FeaturePlacement { x: number; y: number; size: number; top: number; left: number; pairs: Float32Array; grid: Float32Array }
 export class FeatureSynthesis implements Steppable<FeatureSynthesisEvent> {
   constructor(exemplar: Exemplar, options?: FeatureSynthesisOptions);
+  /** The estimated peak working set in bytes (what the memory budget is checked against). */
+  readonly memoryEstimate: number;
   static withFeatureMap(exemplar: Exemplar, map: FeatureMap, options?: FeatureSynthesisOptions): FeatureSynthesis;
   free(): void;
   [Symbol.dispose](): void;
@@ -631,6 +661,8 @@ export class VideoClip {
 /** Options of `VideoTextures` (graph-cut video textures, Kwatra et al. 2003, section 7). Input and
  *  output together must fit the 256 MiB memory budget, or the constructor throws naming the sizes. */
 export interface VideoTexturesOptions {
+  /** Memory budget of the session in MiB (16 to 3584, default 1024): the constructor refuses a size whose estimated working set is larger. */
+  memoryBudgetMiB?: number;
   /** 'loop' (7.A: best transition by frame-pair SSD, optimal seam surface around it; the output is
    *  the loop), 'offsets' (7.B: the whole clip at random temporal offsets), 'extend' (7.C/7.E:
    *  spatio-temporal patches; frames may be larger). Default: 'loop'. */
@@ -676,6 +708,8 @@ export interface VideoTexturesEvent {
 }
 export class VideoTextures implements Steppable<VideoTexturesEvent> {
   constructor(clip: VideoClip, options?: VideoTexturesOptions);
+  /** The estimated peak working set in bytes (what the memory budget is checked against). */
+  readonly memoryEstimate: number;
   free(): void;
   [Symbol.dispose](): void;
   [Symbol.iterator](): Iterator<VideoTexturesEvent>;

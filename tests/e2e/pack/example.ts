@@ -32,10 +32,12 @@ async function everything(): Promise<void> {
   ex.renderInto(rgba);
   const channels: number = ex.channels;
 
-  const to = new TextureOptimization(ex, { outputWidth: 256, seed: 7, search: 'kmeans-tree', energy: 'haar', neighbourhoodSizes: [16, 8] });
+  const to = new TextureOptimization(ex, { outputWidth: 256, seed: 7, search: 'kmeans-tree', energy: 'haar', neighbourhoodSizes: [16, 8], memoryBudgetMiB: 512 });
+  const estimate: number = to.memoryEstimate;
   for (const event of to) {
     const e: number = event.energy;
-    const k: 'level' | 'iteration' | 'done' = event.kind;
+    const k: 'level' | 'iteration' | 'part' | 'done' = event.kind;
+    const p: number = event.progress;
   }
   const last: TextureOptimizationEvent | null = await to.run({ signal, onEvent: (event) => event.neighbourhoodSize });
   to.renderInto(rgba);
