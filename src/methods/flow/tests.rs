@@ -313,3 +313,29 @@ fn frames_keep_their_detail_along_a_vortex() {
         flat(&naive)
     );
 }
+
+#[test]
+#[ignore = "timing: FLOW_SIZE=512 cargo test --profile explore --lib flow_frame_timing -- --ignored --nocapture"]
+fn flow_frame_timing() {
+    let exemplar = sample("tiles_128");
+    let size: usize = std::env::var("FLOW_SIZE").map_or(256, |v| v.parse().unwrap());
+    let options = FlowOptions {
+        output_width: size,
+        output_height: size,
+        frames: 6,
+        ..FlowOptions::default()
+    };
+    let mut session = FlowSession::new(&exemplar, vortex(2.0), options).unwrap();
+    let mut frame_start = None;
+    loop {
+        let e = session.step().unwrap();
+        if e.kind == FlowEventKind::Frame && frame_start.is_none() {
+            frame_start = Some(std::time::Instant::now());
+        }
+        if e.kind == FlowEventKind::Done {
+            break;
+        }
+    }
+    let ms = frame_start.unwrap().elapsed().as_secs_f64() * 1e3 / 5.0;
+    println!("flow {size}x{size}: {ms:.1} ms per frame after the first");
+}

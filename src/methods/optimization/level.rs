@@ -3,7 +3,7 @@
 //! on them (Algorithm 1, or Algorithm 2 with a [`Constraint`]). The multi-level session and the
 //! flow-guided animation both drive it.
 
-use super::constraints::Constraint;
+use super::constraints::{Constraint, QueryTerms};
 use super::e_step::{Matches, Sums, robust_weight};
 use super::features::feature_map;
 use super::histogram::{Scratch, SortedChannels};
@@ -69,6 +69,8 @@ struct MStepRun {
     map: FeatureMap,
     occurrence: Option<Occurrence>,
     progress: Progress,
+    /// The constraint's query terms, made at the first part that has a constraint.
+    terms: Option<QueryTerms>,
 }
 
 /// An E-step under way: its IRLS weights, its sums, and the next node to add.
@@ -295,6 +297,7 @@ impl LevelSolver {
             map: feature_map(output, mu, edge(wrap)),
             occurrence,
             progress: self.matcher.progress(self.matches.len()),
+            terms: None,
         });
     }
 
@@ -350,14 +353,18 @@ impl LevelSolver {
             "the session refuses constraints with a wavelet energy"
         );
         let constraint = constraint.filter(|_| self.wavelet.is_none());
+        if let (Some(c), None) = (constraint, &run.terms) {
+            run.terms = Some(c.query_terms());
+        }
         let map = &run.map;
+        let terms = run.terms.as_ref().filter(|_| constraint.is_some());
         let plain = || {
             GridQueries::new(map, (&self.cols, &self.rows), size, wrap)
                 .transformed(self.wavelet.as_ref())
         };
         let before = run.progress.visits();
         let done = self.matcher.resume(
-            &mut plain().constrained(constraint, space.weights()),
+            &mut plain().constrained(terms, space.weights()),
             &objective,
             grid,
             (&mut self.matches, &mut self.objective),

@@ -3,7 +3,7 @@
 //! transformed when the energy is a wavelet one, and pulled towards the soft constraints'
 //! colours with the constraint's weights when one is given (Algorithm 2).
 
-use super::constraints::Constraint;
+use super::constraints::QueryTerms;
 use super::features::gather;
 use super::wavelet_energy::WaveletEnergy;
 use crate::solvers::nn::{FeatureMap, Queries, Query};
@@ -17,8 +17,8 @@ pub struct GridQueries<'a> {
     pub wrap: bool,
     /// Transform gathered neighbourhoods (the wavelet energies) before comparing.
     pub wavelet: Option<&'a WaveletEnergy>,
-    /// Soft constraints, with the space's fall-off that their weights scale.
-    pub constraint: Option<(&'a Constraint, &'a [f32])>,
+    /// Soft constraints' query terms, with the space's fall-off that their weights scale.
+    pub constraint: Option<(&'a QueryTerms, &'a [f32])>,
     /// Scratch: one gathered neighbourhood and one block side, for the wavelet transform.
     gathered: Vec<f32>,
     scratch: Vec<f32>,
@@ -54,7 +54,7 @@ impl<'a> GridQueries<'a> {
 
     /// Applies soft constraints, scaling the space's `weights`.
     #[must_use]
-    pub fn constrained(mut self, constraint: Option<&'a Constraint>, weights: &'a [f32]) -> Self {
+    pub fn constrained(mut self, constraint: Option<&'a QueryTerms>, weights: &'a [f32]) -> Self {
         self.constraint = constraint.map(|c| (c, weights));
         self
     }
@@ -84,7 +84,7 @@ impl Queries for GridQueries<'_> {
             query.weights.clear();
             query.weights.extend_from_slice(weights);
             query.own_weights = true;
-            constraint.apply_to_query(
+            constraint.apply(
                 x,
                 y,
                 self.size,
