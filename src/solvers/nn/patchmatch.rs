@@ -74,7 +74,7 @@ impl Search<'_> {
         let mut visited = 0;
         while progress.pass < progress.passes && visited < limit {
             let pass = progress.pass;
-            let forward = pass % 2 == 0;
+            let forward = pass.is_multiple_of(2);
             let step: isize = if forward { 1 } else { -1 };
             let k = progress.next;
             let i = if forward { k } else { nx * ny - 1 - k };
