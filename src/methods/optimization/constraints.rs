@@ -133,8 +133,10 @@ pub struct QueryTerms {
 }
 
 impl QueryTerms {
-    /// [`Constraint::apply_to_query`] with the terms computed once: query `(x + lm c) / (1 +
-    /// lm)`, weights `g (1 + lm)`, for the neighbourhood at `(x0, y0)`.
+    /// Turns the gathered query of the neighbourhood at `(x0, y0)` (`size` wide, `dims` values
+    /// per pixel of which the first `channels` are colour) and its weights into the constrained
+    /// search: query `(x + lm c) / (1 + lm)`, weights `g (1 + lm)` (completing the square of
+    /// `g (x - v)^2 + lm g (v - c)^2`).
     #[allow(clippy::too_many_arguments)]
     pub fn apply(
         &self,
@@ -198,51 +200,9 @@ impl Constraint {
         }
     }
 
-    /// Turns a gathered neighbourhood query (top-left `(x0, y0)`, `size` wide, `dims` values per
-    /// pixel of which the first `channels` are colour) and its weights into the M-step's
-    /// constrained search: query `(x + lm c) / (1 + lm)`, weights `g (1 + lm)`.
-    #[allow(clippy::too_many_arguments)]
-    pub fn apply_to_query(
-        &self,
-        x0: usize,
-        y0: usize,
-        size: usize,
-        dims: usize,
-        wrap: bool,
-        query: &mut [f32],
-        weights: &mut [f32],
-    ) {
-        let (w, h, c) = (
-            self.target.width(),
-            self.target.height(),
-            self.target.channels(),
-        );
-        let target = self.target.data();
-        for dy in 0..size {
-            let y = if wrap { (y0 + dy) % h } else { y0 + dy };
-            // The row as at most two runs of contiguous pixels (the second when it wraps past
-            // the right border): this runs once per node visit of every M-step sweep, so no
-            // division per pixel.
-            let first = if wrap { size.min(w - x0) } else { size };
-            for (x, dx0, len) in [(x0, 0, first), (0, first, size - first)] {
-                let row = y * w + x;
-                for (j, &m) in self.mask[row..row + len].iter().enumerate() {
-                    let lm = self.lambda * m;
-                    if lm > 0.0 {
-                        let (p, base) = (row + j, (dy * size + dx0 + j) * dims);
-                        for k in 0..c {
-                            let q = &mut query[base + k];
-                            *q = (*q + lm * target[p * c + k]) / (1.0 + lm);
-                            weights[base + k] *= 1.0 + lm;
-                        }
-                    }
-                }
-            }
-        }
-    }
-
-    /// The per-pixel terms of [`Constraint::apply_to_query`], computed once for an M-step whose
-    /// queries are made at every node visit.
+    /// The terms that turn a gathered neighbourhood query and its weights into the M-step's
+    /// constrained search (see [`QueryTerms::apply`]), computed once for an M-step whose queries
+    /// are made at every node visit.
     #[must_use]
     pub fn query_terms(&self) -> QueryTerms {
         let c = self.target.channels();
@@ -350,7 +310,9 @@ mod tests {
             .at_size(1, 1);
         let (x, g) = (0.1f32, 0.7f32);
         let (mut query, mut weights) = (vec![x], vec![g]);
-        constraint.apply_to_query(0, 0, 1, 1, false, &mut query, &mut weights);
+        constraint
+            .query_terms()
+            .apply(0, 0, 1, 1, false, &mut query, &mut weights);
         let direct = |v: f32| g * (x - v).powi(2) + 3.0 * g * (v - 0.9).powi(2);
         let squared = |v: f32| weights[0] * (v - query[0]).powi(2);
         let offset = direct(0.0) - squared(0.0);
@@ -373,15 +335,9 @@ mod tests {
         for (x0, y0, wrap) in [(0, 0, false), (4, 2, false), (6, 4, true), (5, 3, true)] {
             let base: Vec<f32> = (0..size * size * dims).map(|i| i as f32 * 0.01).collect();
             let (mut query, mut weights) = (base.clone(), vec![0.5; base.len()]);
-            constraint.apply_to_query(x0, y0, size, dims, wrap, &mut query, &mut weights);
-            // The precomputed terms give the same query and weights.
-            let (mut q2, mut w2) = (base.clone(), vec![0.5; base.len()]);
             constraint
                 .query_terms()
-                .apply(x0, y0, size, dims, wrap, &mut q2, &mut w2);
-            for (a, b) in q2.iter().zip(&query).chain(w2.iter().zip(&weights)) {
-                assert!((a - b).abs() < 1e-6, "({x0}, {y0}): {a} vs {b}");
-            }
+                .apply(x0, y0, size, dims, wrap, &mut query, &mut weights);
             for dy in 0..size {
                 for dx in 0..size {
                     let (x, y) = ((x0 + dx) % w, (y0 + dy) % h);
