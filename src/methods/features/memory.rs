@@ -28,6 +28,7 @@ pub fn working_set(
     options: &FeatureOptions,
     inputs: &[(usize, usize)],
     channels: usize,
+    graphcut: Option<&WorkingSet>,
 ) -> WorkingSet {
     let (w, h) = (options.output_width, options.output_height);
     let n = w as u64 * h as u64;
@@ -53,6 +54,10 @@ pub fn working_set(
                 .unwrap_or(0);
             set.add("FFT search", search_bytes(search, channels));
         }
+    }
+    // With graph-cut placement, the graph-cut synthesis underneath holds its own.
+    for (what, bytes) in graphcut.map_or(&[][..], WorkingSet::parts) {
+        set.add(what, *bytes);
     }
     set
 }

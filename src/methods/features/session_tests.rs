@@ -1,0 +1,211 @@
+//! Tests of the feature-guided session: whole runs, graph-cut placement, edited feature masks.
+
+use super::*;
+
+mod synthesis {
+    use super::*;
+    use crate::core::testing::sample;
+
+    fn run(exemplar: &Image, options: FeatureOptions) -> (Image, Vec<FeatureEvent>, Vec<bool>) {
+        let mut s = FeatureSynthesis::new(exemplar, None, options).unwrap();
+        let mut events = Vec::new();
+        loop {
+            let e = s.step().unwrap();
+            events.push(e);
+            if e.done {
+                return (s.image().clone(), events, s.feature_mask().to_vec());
+            }
+        }
+    }
+
+    #[test]
+    fn it_grows_texture_and_feature_map_together() {
+        let ex = sample("tiles_64");
+        let options = FeatureOptions {
+            output_width: 100,
+            output_height: 90,
+            patch_size: 32,
+            placement: FeaturePlacement::Scan,
+            ..FeatureOptions::default()
+        };
+        let (img, events, map) = run(&ex, options.clone());
+        assert_eq!((img.width(), img.height()), (100, 90));
+        let last = events.last().unwrap();
+        assert_eq!(last.patches, events.len());
+        assert!(
+            events
+                .iter()
+                .skip(1)
+                .any(|e| e.context_features > 0 && e.correspondences > 0)
+        );
+        assert!(events.iter().all(|e| !e.colour_only));
+        assert!(events.iter().any(|e| e.warp == WarpKind::Spline));
+        assert!(
+            map.iter().filter(|&&m| m).count() > 200,
+            "the feature map grew"
+        );
+        // Every pixel is made (no black left), and the run repeats exactly.
+        assert!(img.data().chunks(3).all(|p| p.iter().sum::<f32>() > 0.0));
+        assert_eq!(run(&ex, options).0, img);
+    }
+
+    #[test]
+    fn without_features_it_matches_colour_only_and_says_so() {
+        for placement in [FeaturePlacement::Scan, FeaturePlacement::Graphcut] {
+            colour_only(placement);
+        }
+    }
+
+    fn colour_only(placement: FeaturePlacement) {
+        // A gentle, smooth gradient has no edges or ridges above the floor.
+        let ex = Image::from_fn(48, 48, 3, |x, y, c| 0.4 + (x + y + c) as f32 / 4000.0).unwrap();
+        let options = FeatureOptions {
+            output_width: 64,
+            output_height: 64,
+            patch_size: 16,
+            placement,
+            ..FeatureOptions::default()
+        };
+        let (_, events, map) = run(&ex, options);
+        assert!(
+            events
+                .iter()
+                .skip(1)
+                .all(|e| e.colour_only && e.warp == WarpKind::None)
+        );
+        assert!(map.iter().all(|&m| !m));
+    }
+
+    #[test]
+    fn bad_options_are_named() {
+        let ex = sample("tiles_64");
+        let err = |o: FeatureOptions| {
+            FeatureSynthesis::new(&ex, None, o)
+                .err()
+                .unwrap()
+                .to_string()
+        };
+        assert!(
+            err(FeatureOptions {
+                patch_size: 8,
+                ..FeatureOptions::default()
+            })
+            .contains("patchSize")
+        );
+        assert!(
+            err(FeatureOptions {
+                patch_size: 100,
+                ..FeatureOptions::default()
+            })
+            .contains("larger than the 64x64")
+        );
+        assert!(
+            err(FeatureOptions {
+                patch_size: 32,
+                feature_weight: f32::NAN,
+                ..FeatureOptions::default()
+            })
+            .contains("featureWeight")
+        );
+        assert!(
+            err(FeatureOptions {
+                patch_size: 32,
+                overlap: Some(20),
+                ..FeatureOptions::default()
+            })
+            .contains("overlap")
+        );
+        let map = detect(&sample("tiles_128"), DetectOptions::default()).unwrap();
+        let msg = FeatureSynthesis::new(
+            &ex,
+            Some(map),
+            FeatureOptions {
+                patch_size: 32,
+                ..FeatureOptions::default()
+            },
+        )
+        .err()
+        .unwrap()
+        .to_string();
+        assert!(
+            msg.contains("feature map") && msg.contains("64x64"),
+            "{msg}"
+        );
+    }
+}
+mod graphcut_placement {
+    use super::*;
+    use crate::core::testing::sample;
+
+    fn run(options: FeatureOptions) -> (Image, Vec<FeatureEvent>, Vec<bool>) {
+        let ex = sample("tiles_64");
+        let mut s = FeatureSynthesis::new(&ex, None, options).unwrap();
+        let mut events = Vec::new();
+        while !s.is_done() {
+            events.push(s.step().unwrap());
+        }
+        (s.image().clone(), events, s.feature_mask().to_vec())
+    }
+
+    #[test]
+    fn graph_cut_placement_grows_texture_and_feature_map_with_the_feature_cost() {
+        let options = FeatureOptions {
+            output_width: 100,
+            output_height: 90,
+            patch_size: 32,
+            ..FeatureOptions::default()
+        };
+        assert_eq!(options.placement, FeaturePlacement::Graphcut);
+        let (img, events, map) = run(options.clone());
+        assert_eq!((img.width(), img.height()), (100, 90));
+        assert!(events.last().unwrap().done);
+        // After the first patch, choices see context features and pay a feature cost.
+        assert!(events.iter().skip(1).all(|e| !e.colour_only));
+        assert!(
+            events
+                .iter()
+                .skip(1)
+                .any(|e| e.context_features > 0 && e.feature_cost > 0.0)
+        );
+        assert!(events.iter().all(|e| e.warp == WarpKind::None));
+        assert!(map.iter().filter(|&&m| m).count() > 200);
+        assert!(img.data().chunks(3).all(|p| p.iter().sum::<f32>() > 0.0));
+        assert_eq!(run(options.clone()).0, img, "the run repeats exactly");
+        // The feature terms change the result: off, it is another synthesis.
+        let plain = run(FeatureOptions {
+            feature_weight: 0.0,
+            seam_feature_weight: 0.0,
+            ..options
+        });
+        assert_ne!(plain.0, img);
+    }
+}
+
+mod masks {
+    use super::*;
+    use crate::core::testing::sample;
+
+    #[test]
+    fn a_map_rebuilt_from_its_mask_gives_the_same_synthesis() {
+        let ex = sample("tiles_64");
+        let mut map = detect(&ex, DetectOptions::default()).unwrap();
+        map.paint(10.0, 10.0, 3.0, false);
+        map.paint(40.0, 40.0, 1.0, true);
+        let mut rebuilt = detect(&ex, DetectOptions::default()).unwrap();
+        rebuilt.mask.clone_from(&map.mask);
+        assert!(rebuilt == map);
+        let options = FeatureOptions {
+            output_width: 96,
+            output_height: 96,
+            patch_size: 32,
+            placement: FeaturePlacement::Scan,
+            ..FeatureOptions::default()
+        };
+        let run = |m: FeatureMap| {
+            let mut s = FeatureSynthesis::new(&ex, Some(m), options.clone()).unwrap();
+            while !s.step().unwrap().done {}
+            s.image().clone()
+        };
+        assert!(run(map) == run(rebuilt));
+    }
+}
