@@ -8,6 +8,7 @@ pub mod e_step;
 pub mod features;
 pub mod histogram;
 pub mod initial;
+pub mod iteration;
 pub mod level;
 pub mod m_step;
 pub mod memory;

@@ -4,6 +4,8 @@
 use super::constraints::{Constraint, SoftConstraints};
 use super::e_step::edge;
 use super::initial::random_patches;
+pub use super::iteration::Phase;
+use super::iteration::{Iteration, StepBudget, Work};
 use super::level::{LevelSetup, LevelSolver, fit_output};
 use super::m_step::PATCHMATCH_PASSES;
 use super::memory::{METHOD, working_set};
@@ -14,59 +16,11 @@ use crate::core::sample::resize_bilinear;
 use crate::core::{Edge, Error, Image, Result, Rng};
 use crate::solvers::nn::Pos;
 
-/// Sessions whose output has more pixels than this (larger than 256x512) split their iterations
-/// over several steps, each stopping after about [`STEP_MILLISECONDS`], so that no step of a
-/// large synthesis blocks for long (one iteration at neighbourhood size 8 takes about 0.5 s at
-/// 1024x1024). Smaller sessions step whole iterations, as the paper's Fig. 3 counts them.
-/// Where a split iteration stops changes no output.
-pub const SPLIT_PIXELS: usize = 1 << 17;
-
-/// The time a step of a split iteration works before it stops. It looks at the clock between
-/// chunks of about [`CHUNK_WORK`] (a few milliseconds); the E-step's last part (the average,
-/// histogram matching, the M-step's feature map) cannot be cut and starts only in the first
-/// third of a step.
-pub const STEP_MILLISECONDS: f64 = 60.0;
-
-/// Work between two looks at the clock, in vector values: an M-step's node visit counts as the
-/// vector length plus [`VISIT_OVERHEAD`], adding a node to the E-step's sums as one such visit.
-pub const CHUNK_WORK: usize = 1 << 21;
-
-/// The fixed cost of visiting a node (making its query, proposing candidates), in vector
-/// values: measured at 1024x1024, a visit takes 0.7 us at size 8 (192 values) and 6.4 us at
-/// size 32 (3072 values), 2 ns per value plus 0.3 us.
-pub const VISIT_OVERHEAD: usize = 160;
-
-/// Where the current EM iteration is.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Stage {
-    /// Nothing done yet.
-    Start,
-    /// The M-step on a level's up-sampled output, before its first E-step.
-    FirstMatch,
-    /// The E-step's sums are next (or under way).
-    EStep,
-    /// The E-step's average is next.
-    Average,
-    /// Histogram matching of the E-step's output is next, then the M-step begins.
-    Histogram,
-    /// The M-step after the E-step is running.
-    MStep,
-}
-
-/// The half of an EM iteration a step stopped in.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Phase {
-    /// The M-step that starts a level (on its up-sampled output).
-    FirstMatch,
-    EStep,
-    MStep,
-}
-
 /// What a step did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum EventKind {
     /// Part of an iteration: on large outputs an iteration is split over several steps (see
-    /// [`SPLIT_PIXELS`]); the event names the phase and the share of the iteration done.
+    /// [`SPLIT_PIXELS`](super::iteration::SPLIT_PIXELS)); the event names the phase and the share of the iteration done.
     Part,
     /// The first iteration of a new level (resolution or neighbourhood size changed).
     Level,
@@ -136,16 +90,12 @@ pub struct Session {
     constraint: Option<Constraint>,
     history: Vec<EnergyPoint>,
     last: Option<Event>,
-    /// CG iterations of the last E-step.
-    solver_iterations: usize,
-    /// Where the current iteration is.
-    stage: Stage,
+    /// The iteration under way.
+    run: Iteration,
     /// The iteration under way is its level's first since the level was entered.
     new_level: bool,
-    /// With split iterations (see [`SPLIT_PIXELS`]): how long a step works, and the work
-    /// between looks at the clock.
-    split: Option<f64>,
-    chunk_work: usize,
+    /// How long a step works (see [`StepBudget`]).
+    budget: StepBudget,
 }
 
 impl Session {
@@ -163,12 +113,9 @@ impl Session {
         let octaves = levels.iter().map(|l| l.octave).max().unwrap_or(0) + 1;
         let exemplars = gaussian_pyramid(exemplar, octaves, Edge::Clamp)?;
         Ok(Session {
-            solver_iterations: 0,
-            stage: Stage::Start,
+            run: Iteration::default(),
             new_level: false,
-            split: (options.output_width * options.output_height > SPLIT_PIXELS)
-                .then_some(STEP_MILLISECONDS),
-            chunk_work: CHUNK_WORK,
+            budget: StepBudget::for_pixels(options.output_width * options.output_height),
             rng: Rng::new(options.seed),
             options,
             levels,
@@ -241,11 +188,14 @@ impl Session {
     }
 
     /// Sets whether iterations split over steps and how long such a step works (None: whole
-    /// iterations; see [`SPLIT_PIXELS`] for the default), and the work between looks at the
-    /// clock (see [`CHUNK_WORK`]). Where iterations split changes no output.
+    /// iterations; see [`SPLIT_PIXELS`](super::iteration::SPLIT_PIXELS) for the default), and the work between looks at the
+    /// clock (see [`CHUNK_WORK`](super::iteration::CHUNK_WORK)). Where iterations split
+    /// changes no output.
     pub fn set_step_budget(&mut self, milliseconds: Option<f64>, chunk_work: usize) {
-        self.split = milliseconds.map(|ms| ms.max(0.0));
-        self.chunk_work = chunk_work.max(1);
+        self.budget = StepBudget {
+            split: milliseconds.map(|ms| ms.max(0.0)),
+            chunk_work: chunk_work.max(1),
+        };
     }
 
     /// The estimated working set (see [`super::memory`]), with or without soft constraints.
@@ -336,7 +286,7 @@ impl Session {
     }
 
     /// Runs one EM iteration and reports it; on a large output, part of one (see
-    /// [`SPLIT_PIXELS`]; the event's kind is then [`EventKind::Part`]).
+    /// [`SPLIT_PIXELS`](super::iteration::SPLIT_PIXELS); the event's kind is then [`EventKind::Part`]).
     pub fn step(&mut self) -> Result<Event> {
         if self.is_done() {
             let mut last = self.last.expect("a finished session has stepped");
@@ -371,7 +321,7 @@ impl Session {
             match_energy: self.solver.as_ref().expect("level entered").match_energy(),
             changed,
             total_iterations: self.history.len(),
-            solver_iterations: self.solver_iterations,
+            solver_iterations: self.run.solver_iterations,
             phase: Phase::MStep,
             progress: 1.0,
         };
@@ -393,20 +343,9 @@ impl Session {
     fn part_event(&self) -> Event {
         let lv = self.levels[self.level];
         let solver = self.solver.as_ref().expect("level entered");
-        let fraction = solver.m_step_fraction().unwrap_or(0.0);
-        let (phase, progress) = match self.stage {
-            Stage::FirstMatch => (Phase::FirstMatch, 0.2 * fraction),
-            Stage::Start | Stage::EStep => (
-                Phase::EStep,
-                0.2 + 0.15 * solver.e_step_fraction().unwrap_or(0.0),
-            ),
-            Stage::Average => (Phase::EStep, 0.35),
-            Stage::Histogram => (
-                Phase::EStep,
-                0.35 + 0.05 * solver.histogram_fraction(lv.output_width * lv.output_height),
-            ),
-            Stage::MStep => (Phase::MStep, 0.4 + 0.6 * fraction),
-        };
+        let (phase, progress) = self
+            .run
+            .progress(solver, lv.output_width * lv.output_height);
         let (energy, match_energy, total) = match self.last {
             Some(e) => (e.energy, e.match_energy, e.total_iterations),
             None => (f64::NAN, f64::NAN, 0),
@@ -426,7 +365,7 @@ impl Session {
             match_energy,
             changed: 0,
             total_iterations: total,
-            solver_iterations: self.solver_iterations,
+            solver_iterations: self.run.solver_iterations,
             phase,
             progress,
         }
@@ -469,7 +408,7 @@ impl Session {
         }
         self.fresh = self.output.is_some();
         self.new_level = true;
-        self.stage = Stage::Start;
+        self.run = Iteration::default();
         self.solver = Some(solver);
         self.entered = Some(self.level);
         self.constraint = self.level_constraint();
@@ -477,104 +416,44 @@ impl Session {
     }
 
     /// Advances the current EM iteration: (on a fresh level, an M-step on the up-sampled output
-    /// first), E-step with IRLS weights, M-step. With split iterations (see [`SPLIT_PIXELS`])
+    /// first), E-step with IRLS weights, M-step. With split iterations (see [`SPLIT_PIXELS`](super::iteration::SPLIT_PIXELS))
     /// it stops once the step's time is up, between chunks. Returns how many matches changed in
     /// the final M-step once the iteration is done, else None (the next step resumes it).
     fn advance(&mut self, entering: bool) -> Result<Option<usize>> {
         let lv = self.levels[self.level];
         let exemplar = &self.exemplars[lv.octave];
         let solver = self.solver.as_mut().expect("level entered");
-        let constraint = self.constraint.as_ref();
-        let len = solver.vector_len() + VISIT_OVERHEAD;
-        let chunk = match self.split {
-            Some(_) => (self.chunk_work / len).max(1),
-            None => usize::MAX,
-        };
-        let split = self.split;
-        let started = crate::core::clock::now_ms();
-        let time_up = |share: f64| {
-            split.is_some_and(|ms| crate::core::clock::now_ms() - started >= share * ms)
-        };
-        // Whether this step did any work yet (it always does some before it stops).
-        let mut worked = false;
-        loop {
-            match self.stage {
-                Stage::Start => {
-                    if self.output.is_none() {
-                        // The coarsest level starts from random exemplar patches (see
-                        // [`random_patches`]).
-                        self.output = Some(random_patches(
-                            exemplar,
-                            lv.output_width,
-                            lv.output_height,
-                            lv.size,
-                            &mut self.rng,
-                        )?);
-                        self.fresh = true;
-                    }
-                    self.stage = if self.fresh {
-                        solver.begin_m_step(self.output.as_ref().expect("made above"));
-                        self.fresh = false;
-                        Stage::FirstMatch
-                    } else {
-                        Stage::EStep
-                    };
-                    if entering && split.is_some() {
-                        // Entering a level (its exemplar neighbourhoods, the up-sampled
-                        // output, carried matches, the first M-step's feature map) is a
-                        // step of its own on a large output.
-                        return Ok(None);
-                    }
-                    continue;
-                }
-                Stage::FirstMatch | Stage::MStep => {
-                    let mut visits = chunk;
-                    match (
-                        self.stage,
-                        solver.resume_m_step(constraint, &mut self.rng, &mut visits),
-                    ) {
-                        (_, None) => {}
-                        (Stage::FirstMatch, Some(_)) => self.stage = Stage::EStep,
-                        (_, Some(changed)) => {
-                            self.stage = Stage::Start;
-                            return Ok(Some(changed));
-                        }
-                    }
-                }
-                Stage::EStep => {
-                    let output = self.output.as_mut().expect("made at the start");
-                    if !solver.e_step_running() {
-                        solver.begin_e_step(output);
-                    }
-                    let mut nodes = chunk;
-                    if solver.resume_e_step(exemplar, &mut nodes) {
-                        self.stage = Stage::Average;
-                    }
-                }
-                // The E-step's average cannot be cut: it starts only early in a step.
-                Stage::Average if worked && time_up(1.0 / 3.0) => return Ok(None),
-                Stage::Average => {
-                    let output = self.output.as_mut().expect("made at the start");
-                    self.solver_iterations = solver.average(exemplar, output, constraint);
-                    solver.begin_histogram();
-                    self.stage = Stage::Histogram;
-                }
-                Stage::Histogram => {
-                    let output = self.output.as_mut().expect("made at the start");
-                    // A pixel visit of histogram matching costs about as much as 8 values of
-                    // a neighbourhood comparison.
-                    let mut pixels = chunk.saturating_mul(len) / 8;
-                    if solver.resume_histogram(output, constraint, &mut pixels) {
-                        solver.begin_m_step(output);
-                        self.stage = Stage::MStep;
-                    }
-                }
+        if self.run.idle() {
+            if self.output.is_none() {
+                // The coarsest level starts from random exemplar patches (see
+                // [`random_patches`]).
+                self.output = Some(random_patches(
+                    exemplar,
+                    lv.output_width,
+                    lv.output_height,
+                    lv.size,
+                    &mut self.rng,
+                )?);
+                self.fresh = true;
             }
-            worked = true;
-            if time_up(1.0) {
+            let output = self.output.as_ref().expect("made above");
+            self.run
+                .begin(solver, output, std::mem::take(&mut self.fresh));
+            if entering && self.budget.split.is_some() {
+                // Entering a level (its exemplar neighbourhoods, the up-sampled output, carried
+                // matches, the first M-step's feature map) is a step of its own on a large
+                // output.
                 return Ok(None);
             }
         }
+        let work = Work {
+            solver,
+            exemplar,
+            output: self.output.as_mut().expect("made at the start"),
+            constraint: self.constraint.as_ref(),
+            rng: &mut self.rng,
+        };
+        Ok(self.run.advance(work, self.budget))
     }
 
     /// The texture energy of the last M-step (see [`LevelSolver::energy`]).

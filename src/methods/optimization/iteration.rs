@@ -1,0 +1,216 @@
+//! One EM iteration of a level (Algorithm 1's loop body: E-step with the IRLS weights, then
+//! M-step; on a fresh level an M-step on the up-sampled output comes first), resumable: on a
+//! large output it runs over several steps, each stopping after about [`STEP_MILLISECONDS`], so
+//! that no step blocks a page for long. Texture optimisation and the frames of a flow animation
+//! both run their iterations through it. Where an iteration stops changes no output.
+
+use super::constraints::Constraint;
+use super::level::LevelSolver;
+use crate::core::{Image, Rng};
+
+/// Outputs with more pixels than this (larger than 256x512) split their iterations over
+/// several steps (one iteration at neighbourhood size 8 takes about 0.5 s at 1024x1024).
+/// Smaller ones step whole iterations, as the paper's Fig. 3 counts them.
+pub const SPLIT_PIXELS: usize = 1 << 17;
+
+/// The time a step of a split iteration works before it stops. It looks at the clock between
+/// chunks of about [`CHUNK_WORK`] (a few milliseconds); the E-step's last part (the average,
+/// histogram matching, the M-step's feature map) cannot be cut and starts only in the first
+/// third of a step.
+pub const STEP_MILLISECONDS: f64 = 60.0;
+
+/// Work between two looks at the clock, in vector values: an M-step's node visit counts as the
+/// vector length plus [`VISIT_OVERHEAD`], adding a node to the E-step's sums as one such visit.
+pub const CHUNK_WORK: usize = 1 << 21;
+
+/// The fixed cost of visiting a node (making its query, proposing candidates), in vector
+/// values: measured at 1024x1024, a visit takes 0.7 us at size 8 (192 values) and 6.4 us at
+/// size 32 (3072 values), 2 ns per value plus 0.3 us.
+pub const VISIT_OVERHEAD: usize = 160;
+
+/// How long a step may work.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StepBudget {
+    /// Milliseconds per step when iterations are split, None to run whole iterations.
+    pub split: Option<f64>,
+    /// Work between two looks at the clock (see [`CHUNK_WORK`]).
+    pub chunk_work: usize,
+}
+
+impl StepBudget {
+    /// The default for an output of `pixels`: split above [`SPLIT_PIXELS`].
+    #[must_use]
+    pub fn for_pixels(pixels: usize) -> StepBudget {
+        StepBudget {
+            split: (pixels > SPLIT_PIXELS).then_some(STEP_MILLISECONDS),
+            chunk_work: CHUNK_WORK,
+        }
+    }
+}
+
+/// Where the current EM iteration is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stage {
+    /// Nothing done yet.
+    Start,
+    /// The M-step on a level's up-sampled output, before its first E-step.
+    FirstMatch,
+    /// The E-step's sums are next (or under way).
+    EStep,
+    /// The E-step's average is next.
+    Average,
+    /// Histogram matching of the E-step's output is next, then the M-step begins.
+    Histogram,
+    /// The M-step after the E-step is running.
+    MStep,
+}
+
+/// The half of an EM iteration a step stopped in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Phase {
+    /// The M-step that starts a level (on its up-sampled output).
+    FirstMatch,
+    EStep,
+    MStep,
+}
+
+/// What a level's EM iteration needs, borrowed for one step.
+pub struct Work<'a> {
+    pub solver: &'a mut LevelSolver,
+    pub exemplar: &'a Image,
+    pub output: &'a mut Image,
+    pub constraint: Option<&'a Constraint>,
+    pub rng: &'a mut Rng,
+}
+
+/// A resumable EM iteration.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Iteration {
+    pub stage: Stage,
+    /// Conjugate-gradient iterations of the last E-step's gradient-energy solve.
+    pub solver_iterations: usize,
+}
+
+impl Default for Iteration {
+    fn default() -> Self {
+        Iteration {
+            stage: Stage::Start,
+            solver_iterations: 0,
+        }
+    }
+}
+
+impl Iteration {
+    /// Whether no iteration is under way.
+    #[must_use]
+    pub fn idle(&self) -> bool {
+        self.stage == Stage::Start
+    }
+
+    /// Begins an iteration on `output`; `fresh`: the output is new to the solver (a level's
+    /// up-sampled output, a flow frame's warped start), so it is matched before the E-step.
+    pub fn begin(&mut self, solver: &mut LevelSolver, output: &Image, fresh: bool) {
+        debug_assert!(self.idle(), "an iteration is under way");
+        self.stage = if fresh {
+            solver.begin_m_step(output);
+            Stage::FirstMatch
+        } else {
+            Stage::EStep
+        };
+    }
+
+    /// Advances the begun iteration until it ends or the budget's time is up (between chunks;
+    /// it always does some work). Returns how many matches changed in its final M-step once the
+    /// iteration is done, else None (the next call resumes it).
+    pub fn advance(&mut self, w: Work<'_>, budget: StepBudget) -> Option<usize> {
+        let Work {
+            solver,
+            exemplar,
+            output,
+            constraint,
+            rng,
+        } = w;
+        let len = solver.vector_len() + VISIT_OVERHEAD;
+        let chunk = match budget.split {
+            Some(_) => (budget.chunk_work / len).max(1),
+            None => usize::MAX,
+        };
+        let started = crate::core::clock::now_ms();
+        let time_up = |share: f64| {
+            budget
+                .split
+                .is_some_and(|ms| crate::core::clock::now_ms() - started >= share * ms)
+        };
+        // Whether this step did any work yet (it always does some before it stops).
+        let mut worked = false;
+        loop {
+            match self.stage {
+                Stage::Start => unreachable!("an iteration is begun before it advances"),
+                Stage::FirstMatch | Stage::MStep => {
+                    let mut visits = chunk;
+                    match (
+                        self.stage,
+                        solver.resume_m_step(constraint, rng, &mut visits),
+                    ) {
+                        (_, None) => {}
+                        (Stage::FirstMatch, Some(_)) => self.stage = Stage::EStep,
+                        (_, Some(changed)) => {
+                            self.stage = Stage::Start;
+                            return Some(changed);
+                        }
+                    }
+                }
+                Stage::EStep => {
+                    if !solver.e_step_running() {
+                        solver.begin_e_step(output);
+                    }
+                    let mut nodes = chunk;
+                    if solver.resume_e_step(exemplar, &mut nodes) {
+                        self.stage = Stage::Average;
+                    }
+                }
+                // The E-step's average cannot be cut: it starts only early in a step.
+                Stage::Average if worked && time_up(1.0 / 3.0) => return None,
+                Stage::Average => {
+                    self.solver_iterations = solver.average(exemplar, output, constraint);
+                    solver.begin_histogram();
+                    self.stage = Stage::Histogram;
+                }
+                Stage::Histogram => {
+                    // A pixel visit of histogram matching costs about as much as 8 values of
+                    // a neighbourhood comparison.
+                    let mut pixels = chunk.saturating_mul(len) / 8;
+                    if solver.resume_histogram(output, constraint, &mut pixels) {
+                        solver.begin_m_step(output);
+                        self.stage = Stage::MStep;
+                    }
+                }
+            }
+            worked = true;
+            if time_up(1.0) {
+                return None;
+            }
+        }
+    }
+
+    /// The phase of the iteration under way and the share (0 to 1) of its work done, for an
+    /// output of `pixels`: the first M-step of a level, the E-step and the M-step weigh
+    /// 1 : 1 : 3 per node visit, roughly their costs.
+    #[must_use]
+    pub fn progress(&self, solver: &LevelSolver, pixels: usize) -> (Phase, f64) {
+        let fraction = solver.m_step_fraction().unwrap_or(0.0);
+        match self.stage {
+            Stage::FirstMatch => (Phase::FirstMatch, 0.2 * fraction),
+            Stage::Start | Stage::EStep => (
+                Phase::EStep,
+                0.2 + 0.15 * solver.e_step_fraction().unwrap_or(0.0),
+            ),
+            Stage::Average => (Phase::EStep, 0.35),
+            Stage::Histogram => (
+                Phase::EStep,
+                0.35 + 0.05 * solver.histogram_fraction(pixels),
+            ),
+            Stage::MStep => (Phase::MStep, 0.4 + 0.6 * fraction),
+        }
+    }
+}
