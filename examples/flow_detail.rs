@@ -3,7 +3,7 @@
 //! Prints frame 1's flat fraction, coherence and flow energy, the means over frames 30-60 and
 //! their ratios to frame 1, beside the naive warp's; `WRITE=dir` writes frames 1 and the last as
 //! PNGs. Options from the environment: `HIST` (histogramMatching, 1), `LAMBDA` (0.2),
-//! `FRAME_ITERATIONS` (3), `FRAME_SIZES` (16,8).
+//! `FRAME_ITERATIONS` (3), `FRAME_SIZES` (the default, 32,16,8), `EVERY` (1).
 
 use texsynth::core::{decode, encode_png};
 use texsynth::methods::flow::{
@@ -27,13 +27,15 @@ fn main() {
         frames,
         histogram_matching: std::env::var("HIST").map_or(1.0, |v| v.parse().expect("number")),
         lambda: std::env::var("LAMBDA").map_or(0.2, |v| v.parse().expect("number")),
-        frame_sizes: std::env::var("FRAME_SIZES").map_or(vec![16, 8], |v| {
+        frame_sizes: std::env::var("FRAME_SIZES").map_or(FlowOptions::default().frame_sizes, |v| {
             v.split(',').map(|s| s.parse().expect("size")).collect()
         }),
         frame_iterations: std::env::var("FRAME_ITERATIONS")
             .map_or(3, |v| v.parse().expect("number")),
         ..FlowOptions::default()
     };
+    // `EVERY=n` measures only frame 1 and every n-th frame from 30 on (quicker sweeps).
+    let every: usize = std::env::var("EVERY").map_or(1, |v| v.parse().expect("number"));
     let mut session = FlowSession::new(&exemplar, flow, options).expect("session");
     let start = std::time::Instant::now();
     let mut rows = Vec::new();
@@ -42,11 +44,17 @@ fn main() {
         if matches!(event.kind, FlowEventKind::Frame | FlowEventKind::Done) {
             let frame = session.frame_image().expect("frame");
             let index = session.frame();
-            if index <= 6 || index >= 30 || index.is_multiple_of(10) {
+            if index == 1
+                || (index >= 30 && index.is_multiple_of(every))
+                || (every == 1 && index <= 6)
+            {
                 let q = quality(&exemplar, &frame).expect("quality");
                 rows.push((index, q.flat, q.coherence, event.flow_energy));
-                let naive =
-                    quality(&exemplar, &session.naive_image().expect("naive")).expect("quality");
+                let naive = if every == 1 {
+                    quality(&exemplar, &session.naive_image().expect("naive")).expect("quality")
+                } else {
+                    q
+                };
                 println!(
                     "frame {index:>3}: flat {:.3} coherence {:.5} flow energy {:.5} (naive warp: flat {:.3} coherence {:.5})",
                     q.flat, q.coherence, event.flow_energy, naive.flat, naive.coherence

@@ -182,6 +182,7 @@ fn read_options(value: &JsValue) -> JsResult<(FlowOptions, FlowSource)> {
 
 fn event_object(e: &FlowEvent) -> JsValue {
     let kind = match e.kind {
+        FlowEventKind::Part => "part",
         FlowEventKind::Iteration => "iteration",
         FlowEventKind::Frame => "frame",
         FlowEventKind::Done => "done",
@@ -189,7 +190,10 @@ fn event_object(e: &FlowEvent) -> JsValue {
     object(&[
         ("kind", kind.into()),
         ("done", (e.kind == FlowEventKind::Done).into()),
-        ("frameFinished", (e.kind != FlowEventKind::Iteration).into()),
+        (
+            "frameFinished",
+            matches!(e.kind, FlowEventKind::Frame | FlowEventKind::Done).into(),
+        ),
         ("frame", (e.frame as u32).into()),
         ("iteration", (e.iteration as u32).into()),
         ("neighbourhoodSize", (e.size as u32).into()),
@@ -197,6 +201,8 @@ fn event_object(e: &FlowEvent) -> JsValue {
         ("flowEnergy", e.flow_energy.into()),
         ("changed", (e.changed as u32).into()),
         ("totalIterations", (e.total_iterations as u32).into()),
+        ("phase", super::optimization::phase_name(e.phase).into()),
+        ("progress", e.progress.into()),
     ])
 }
 
@@ -223,7 +229,8 @@ pub struct FlowAnimation {
 #[wasm_bindgen]
 impl FlowAnimation {
     /// Options (all optional): `outputWidth`, `outputHeight` (128), `frames` (60), `lambda`
-    /// (0.2), `frameSizes` ([16, 8]), `frameIterations` (3), `seed` (1), `search`, `r` (0.8),
+    /// (0.2), `frameSizes` ([32, 16, 8]; sizes wider than the exemplar or the frame are
+    /// skipped), `frameIterations` (3), `seed` (1), `search`, `r` (0.8),
     /// `tileable` (false), and `flow`: a generator `{ type: 'sink' | 'source' | 'vortex' | 'shear'
     /// | 'translation', strength (px/frame), centerX, centerY (0..1), angle (deg), period
     /// (frames), turn (deg/frame) }`, a combination `{ components: [...] }`, one `Float32Array`
@@ -237,9 +244,12 @@ impl FlowAnimation {
         })
     }
 
-    /// Runs one EM iteration. Returns `{ kind: 'iteration' | 'frame' | 'done', done,
+    /// Runs one EM iteration. Returns `{ kind: 'part' | 'iteration' | 'frame' | 'done', done,
     /// frameFinished, frame, iteration, neighbourhoodSize, textureEnergy, flowEnergy, changed,
-    /// totalIterations }`; after a `frame` (or `done`) event, `renderInto` gives that frame.
+    /// totalIterations, phase, progress }`; after a `frame` (or `done`) event, `renderInto`
+    /// gives that frame. Frames larger than 256x512 split each iteration over steps of about
+    /// 60 ms (kind 'part', with the `phase` it stopped in and the `progress` of the iteration,
+    /// 0 to 1), and setting up a frame is a step of its own; where they split changes nothing.
     pub fn step(&mut self) -> JsResult<JsValue> {
         Ok(event_object(&self.session.step()?))
     }

@@ -110,17 +110,18 @@ fn event_object(e: &Event) -> JsValue {
         ("changed", (e.changed as u32).into()),
         ("totalIterations", (e.total_iterations as u32).into()),
         ("solverIterations", (e.solver_iterations as u32).into()),
-        (
-            "phase",
-            match e.phase {
-                Phase::FirstMatch => "first-match",
-                Phase::EStep => "e-step",
-                Phase::MStep => "m-step",
-            }
-            .into(),
-        ),
+        ("phase", phase_name(e.phase).into()),
         ("progress", e.progress.into()),
     ])
+}
+
+/// The JS name of the half of an EM iteration a step stopped in.
+pub(crate) fn phase_name(phase: Phase) -> &'static str {
+    match phase {
+        Phase::FirstMatch => "first-match",
+        Phase::EStep => "e-step",
+        Phase::MStep => "m-step",
+    }
 }
 
 /// A texture-optimisation run (Kwatra et al. 2005) you advance with `step()`.

@@ -33,6 +33,10 @@ fn an_animation_makes_its_frames_and_the_naive_warp() {
         let e = anim.step().unwrap();
         steps += 1;
         assert!(steps < 200, "the animation finishes");
+        // A small frame steps whole iterations: the last phase, all of it.
+        assert_ne!(get(&e, "kind").as_string().unwrap(), "part");
+        assert_eq!(get(&e, "phase").as_string().unwrap(), "m-step");
+        assert_eq!(get(&e, "progress").as_f64().unwrap(), 1.0);
         if get(&e, "frameFinished").as_bool().unwrap() {
             anim.render_into(&target).unwrap();
             frames.push(target.to_vec());

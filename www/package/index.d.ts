@@ -347,7 +347,7 @@ export interface FlowAnimationOptions {
   frames?: number;
   /** Weight of the flow (soft-constraint) energy, eq. 3. Default: 0.2. */
   lambda?: number;
-  /** Neighbourhood sizes of the frames after the first. Default: [16, 8]. */
+  /** Neighbourhood sizes of the frames after the first; sizes wider than the exemplar or the frame are skipped. Default: [32, 16, 8]. */
   frameSizes?: number[];
   /** Iterations per size per frame. Default: 3. */
   frameIterations?: number;
@@ -367,7 +367,8 @@ export interface FlowAnimationOptions {
 
 /** What one `FlowAnimation.step()` did. */
 export interface FlowAnimationEvent {
-  kind: 'iteration' | 'frame' | 'done';
+  /** 'part': frames larger than 256x512 split each iteration (and a frame's set-up) over steps of about 60 ms. */
+  kind: 'part' | 'iteration' | 'frame' | 'done';
   done: boolean;
   /** A frame was finished by this step: `renderInto` gives it. */
   frameFinished: boolean;
@@ -378,6 +379,10 @@ export interface FlowAnimationEvent {
   flowEnergy: number;
   changed: number;
   totalIterations: number;
+  /** The half of the iteration a 'part' step stopped in (a whole iteration: 'm-step'). */
+  phase: 'first-match' | 'e-step' | 'm-step';
+  /** The share of the iteration done, 0 to 1 (1 for a whole iteration). */
+  progress: number;
 }
 
 /** A flow-guided texture animation you advance with `step()`. */

@@ -200,9 +200,11 @@ export function createPanel(ui) {
         if (event.frame > 0) drawArrows(event.frame - 1);
         document.body.dataset.flowFrames = String(event.frame + 1);
       }
+      // Large frames split an iteration over several steps (kind 'part'): say how far it is.
+      const part = event.kind === 'part' ? ` (${event.phase}, ${Math.round(100 * event.progress)}%)` : '';
       const what = event.frame === 0
-        ? `frame 1 (full multi-level synthesis) · iteration ${event.iteration}`
-        : `frame ${event.frame + 1}/${session.getter('frames')} · neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration}`;
+        ? `frame 1 (full multi-level synthesis) · iteration ${event.iteration}${part}`
+        : `frame ${event.frame + 1}/${session.getter('frames')} · neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration}${part}`;
       ui.$('fl-readout').textContent =
         `${what} · texture energy ${event.textureEnergy.toPrecision(3)} · flow energy ${event.flowEnergy.toPrecision(3)}`;
       if (event.done) document.body.dataset.flowDone = 'true';

@@ -9,6 +9,7 @@ use super::options::{FlowOptions, FlowSource};
 use super::warp::warp;
 use crate::core::{Edge, Error, Image, Result, Rng};
 use crate::methods::optimization::constraints::Constraint;
+use crate::methods::optimization::iteration::{Iteration, Phase, StepBudget, Work};
 use crate::methods::optimization::level::{LevelSetup, LevelSolver};
 use crate::methods::optimization::{self, EventKind};
 
@@ -20,6 +21,11 @@ const FRAME_PATCHMATCH_PASSES: usize = 2;
 /// What a step did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FlowEventKind {
+    /// Part of an iteration: on large frames an iteration is split over several steps (see
+    /// [`SPLIT_PIXELS`](optimization::iteration::SPLIT_PIXELS)), and setting up a frame (the
+    /// warp, the matches moved along the flow) is a step of its own; the event names the phase
+    /// and the share of the iteration done.
+    Part,
     /// An EM iteration within a frame.
     Iteration,
     /// The iteration that finished a frame: render it now to keep it.
@@ -46,6 +52,10 @@ pub struct FlowEvent {
     /// Matches that changed in this iteration's M-step.
     pub changed: usize,
     pub total_iterations: usize,
+    /// With [`FlowEventKind::Part`]: the phase the step stopped in and the share (0 to 1) of
+    /// the iteration's work done; a whole iteration reports its last phase and 1.
+    pub phase: Phase,
+    pub progress: f64,
 }
 
 /// The energies a finished frame ended with.
@@ -73,6 +83,9 @@ pub struct FlowSession {
     begun: bool,
     /// True until the first M-step of a (frame, size) ran on the warped start.
     fresh: bool,
+    /// The iteration under way, and how long a step works.
+    run: Iteration,
+    budget: StepBudget,
     /// The frame being made (or the last one made).
     current: Option<Image>,
     /// The last finished frame.
@@ -121,9 +134,7 @@ impl FlowSession {
             options.memory_budget_mib,
         )?;
         let first = optimization::Session::new(exemplar, options.first_frame())?;
-        let mut sizes = options.frame_sizes.clone();
-        sizes.sort_unstable_by(|a, b| b.cmp(a));
-        sizes.dedup();
+        let sizes = options.fitting_frame_sizes(exemplar.width(), exemplar.height());
         let mut rng = Rng::new(options.seed ^ 0x5eed_f10e);
         let solvers = sizes
             .iter()
@@ -147,6 +158,7 @@ impl FlowSession {
                 LevelSolver::new(exemplar, setup, &mut rng)
             })
             .collect();
+        let budget = StepBudget::for_pixels(options.output_width * options.output_height);
         Ok(FlowSession {
             exemplar: exemplar.clone(),
             first: Some(first),
@@ -159,6 +171,8 @@ impl FlowSession {
             iteration: 0,
             begun: false,
             fresh: false,
+            run: Iteration::default(),
+            budget,
             current: None,
             previous: None,
             constraint: None,
@@ -247,7 +261,22 @@ impl FlowSession {
         self.frame
     }
 
-    /// Runs one EM iteration and reports it.
+    /// Sets whether iterations split over steps and how long such a step works (None: whole
+    /// iterations; the default splits frames larger than
+    /// [`SPLIT_PIXELS`](optimization::iteration::SPLIT_PIXELS)), and the work between looks at
+    /// the clock, for frame 0's synthesis too. Where iterations split changes no output.
+    pub fn set_step_budget(&mut self, milliseconds: Option<f64>, chunk_work: usize) {
+        self.budget = StepBudget {
+            split: milliseconds.map(|ms| ms.max(0.0)),
+            chunk_work: chunk_work.max(1),
+        };
+        if let Some(first) = &mut self.first {
+            first.set_step_budget(milliseconds, chunk_work);
+        }
+    }
+
+    /// Runs one EM iteration and reports it; on a large frame, part of one (the event's kind
+    /// is then [`FlowEventKind::Part`]).
     pub fn step(&mut self) -> Result<FlowEvent> {
         if self.is_done() {
             let mut last = self.last.expect("a finished animation has stepped");
@@ -259,7 +288,9 @@ impl FlowSession {
         } else {
             self.step_frame()?
         };
-        self.total_iterations += 1;
+        if event.kind != FlowEventKind::Part {
+            self.total_iterations += 1;
+        }
         let event = FlowEvent {
             total_iterations: self.total_iterations,
             kind: if event.kind == FlowEventKind::Frame && self.is_done() {
@@ -273,12 +304,16 @@ impl FlowSession {
         Ok(event)
     }
 
-    /// One iteration of frame 0's multi-level synthesis.
+    /// One iteration (or part of one) of frame 0's multi-level synthesis.
     fn step_first(&mut self) -> Result<FlowEvent> {
         let first = self.first.as_mut().expect("frame 0 is running");
         let e = first.step()?;
         let mut event = FlowEvent {
-            kind: FlowEventKind::Iteration,
+            kind: if e.kind == EventKind::Part {
+                FlowEventKind::Part
+            } else {
+                FlowEventKind::Iteration
+            },
             frame: 0,
             iteration: e.total_iterations,
             size: e.size,
@@ -286,6 +321,8 @@ impl FlowSession {
             flow_energy: 0.0,
             changed: e.changed,
             total_iterations: 0,
+            phase: e.phase,
+            progress: e.progress,
         };
         if e.kind == EventKind::Done {
             let frame = first.output_full_size()?;
@@ -358,23 +395,36 @@ impl FlowSession {
         Ok(())
     }
 
-    /// One iteration of Algorithm 2 on the current frame at the current neighbourhood size.
+    /// One iteration of Algorithm 2 on the current frame at the current neighbourhood size, or
+    /// part of one on a large frame (where setting the frame up is a step of its own).
     fn step_frame(&mut self) -> Result<FlowEvent> {
         if !self.begun {
             self.begin_frame()?;
+            if self.budget.split.is_some() {
+                return Ok(self.part_event());
+            }
         }
-        let constraint = self.constraint.as_ref();
         let solver = &mut self.solvers[self.size_index];
         let output = self.current.as_mut().expect("frame begun");
-        if self.fresh {
-            solver.m_step(output, constraint, &mut self.rng);
-            self.fresh = false;
+        if self.run.idle() {
+            self.run
+                .begin(solver, output, std::mem::take(&mut self.fresh));
         }
-        solver.e_step(&self.exemplar, output, constraint);
-        let changed = solver.m_step(output, constraint, &mut self.rng);
+        let work = Work {
+            solver,
+            exemplar: &self.exemplar,
+            output,
+            constraint: self.constraint.as_ref(),
+            rng: &mut self.rng,
+        };
+        let Some(changed) = self.run.advance(work, self.budget) else {
+            return Ok(self.part_event());
+        };
         self.iteration += 1;
+        let solver = &self.solvers[self.size_index];
         let texture_energy = solver.energy();
-        let flow_energy = constraint.map_or(0.0, |c| c.energy(output));
+        let output = self.current.as_ref().expect("frame begun");
+        let flow_energy = self.constraint.as_ref().map_or(0.0, |c| c.energy(output));
         let mut event = FlowEvent {
             kind: FlowEventKind::Iteration,
             frame: self.frame,
@@ -384,6 +434,8 @@ impl FlowSession {
             flow_energy,
             changed,
             total_iterations: 0,
+            phase: Phase::MStep,
+            progress: 1.0,
         };
         if changed == 0 || self.iteration >= self.options.frame_iterations {
             self.size_index += 1;
@@ -396,5 +448,24 @@ impl FlowSession {
             }
         }
         Ok(event)
+    }
+
+    /// The report of a step that stopped inside an iteration of a frame after the first: the
+    /// last figures, the phase and the share of the iteration done.
+    fn part_event(&self) -> FlowEvent {
+        let solver = &self.solvers[self.size_index];
+        let pixels = self.options.output_width * self.options.output_height;
+        let (phase, progress) = self.run.progress(solver, pixels);
+        let last = self.last.expect("frame 0 stepped before");
+        FlowEvent {
+            kind: FlowEventKind::Part,
+            frame: self.frame,
+            iteration: self.size_index * self.options.frame_iterations + self.iteration + 1,
+            size: solver.setup().size,
+            changed: 0,
+            phase,
+            progress,
+            ..last
+        }
     }
 }

@@ -2,7 +2,7 @@
 
 use super::*;
 use crate::core::Image;
-use crate::core::testing::sample;
+use crate::core::testing::{noise, sample};
 use crate::methods::quality::quality;
 
 fn vortex(strength: f32) -> FlowSource {
@@ -52,7 +52,7 @@ fn coherence_along_a_vortex() {
         lambda: env("FLOW_LAMBDA", FlowOptions::default().lambda),
         frame_iterations: env("FLOW_ITERS", FlowOptions::default().frame_iterations as f32)
             as usize,
-        frame_sizes: std::env::var("FLOW_SIZES").map_or(vec![16, 8], |s| {
+        frame_sizes: std::env::var("FLOW_SIZES").map_or(FlowOptions::default().frame_sizes, |s| {
             s.split(',').map(|v| v.parse().unwrap()).collect()
         }),
         output_width: env("FLOW_SIZE", 64.0) as usize,
@@ -261,7 +261,15 @@ fn flow_fields_of_the_wrong_size_or_with_bad_values_are_refused() {
     .validate(64, 64)
     .unwrap_err()
     .to_string();
-    assert!(m.contains("frameSizes"), "{m}");
+    assert!(m.contains("frameSizes") && m.contains("[100]"), "{m}");
+    let m = FlowOptions {
+        frame_sizes: vec![16, 200],
+        ..options(3)
+    }
+    .validate(64, 64)
+    .unwrap_err()
+    .to_string();
+    assert!(m.contains("frameSizes") && m.contains("200"), "{m}");
     let m = FlowOptions {
         frames: 0,
         ..options(3)
@@ -338,4 +346,92 @@ fn flow_frame_timing() {
     }
     let ms = frame_start.unwrap().elapsed().as_secs_f64() * 1e3 / 5.0;
     println!("flow {size}x{size}: {ms:.1} ms per frame after the first");
+}
+
+#[test]
+fn frame_sizes_wider_than_the_exemplar_or_frame_are_skipped() {
+    let opts = FlowOptions {
+        output_width: 24,
+        output_height: 40,
+        ..options(2)
+    };
+    // 32 needs a 128-pixel exemplar (4 widths) and a frame at least 32 wide.
+    assert_eq!(opts.fitting_frame_sizes(128, 128), vec![16, 8]);
+    let wide = FlowOptions {
+        output_width: 64,
+        ..opts.clone()
+    };
+    assert_eq!(wide.fitting_frame_sizes(128, 130), vec![32, 16, 8]);
+    assert_eq!(wide.fitting_frame_sizes(127, 200), vec![16, 8]);
+    assert_eq!(opts.fitting_frame_sizes(40, 32), vec![8]);
+    let explicit = FlowOptions {
+        frame_sizes: vec![8, 16, 8, 2],
+        ..opts
+    };
+    assert_eq!(explicit.fitting_frame_sizes(64, 64), vec![16, 8, 2]);
+    // The default ladder on a 40x40 exemplar: 32 and 16 are skipped, the animation runs.
+    let exemplar = noise(40, 40, 3, 4);
+    let (frames, _, events) = animate(
+        &exemplar,
+        vortex(1.0),
+        FlowOptions {
+            output_width: 32,
+            output_height: 32,
+            ..options(2)
+        },
+    );
+    assert_eq!(frames.len(), 2);
+    assert!(
+        events.iter().all(|e| e.size <= 16),
+        "only sizes that fit run"
+    );
+}
+
+#[test]
+fn splitting_frames_over_steps_changes_no_output() {
+    let exemplar = sample("tiles_64");
+    let opts = FlowOptions {
+        output_width: 48,
+        output_height: 40,
+        ..options(3)
+    };
+    let run = |split: bool| {
+        let mut s = FlowSession::new(&exemplar, vortex(1.5), opts.clone()).unwrap();
+        if split {
+            // Every chunk of work is a step of its own.
+            s.set_step_budget(Some(0.0), 3000);
+        }
+        let (mut frames, mut parts, mut whole) = (Vec::new(), 0, 0);
+        let mut phases = std::collections::HashSet::new();
+        loop {
+            let e = s.step().unwrap();
+            match e.kind {
+                FlowEventKind::Part => {
+                    parts += 1;
+                    phases.insert(format!("{:?}", e.phase));
+                    assert!((0.0..1.0).contains(&e.progress), "{e:?}");
+                }
+                _ => whole += 1,
+            }
+            assert_eq!(e.total_iterations, whole, "parts are not iterations");
+            if matches!(e.kind, FlowEventKind::Frame | FlowEventKind::Done) {
+                frames.push(s.frame_image().unwrap());
+            }
+            if e.kind == FlowEventKind::Done {
+                break;
+            }
+        }
+        (frames, parts, whole, phases, s.history().to_vec())
+    };
+    let plain = run(false);
+    let split = run(true);
+    assert_eq!(
+        plain.1, 0,
+        "a small frame steps whole iterations by default"
+    );
+    assert!(split.1 > 3 * split.2, "{} parts", split.1);
+    assert_eq!(split.3.len(), 3, "{:?}", split.3);
+    assert_eq!(split.2, plain.2, "the same iterations");
+    assert_eq!(split.4, plain.4, "the same energies");
+    assert_eq!(split.0, plain.0, "the same frames");
 }
