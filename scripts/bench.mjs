@@ -77,8 +77,8 @@ if (methods.includes('flow')) {
   // its own). Coherence (7x7 patches, exact search; see the README) of every 5th frame is
   // measured outside the timed part and shown relative to the first frame's, beside the naive
   // warp's at the last frame.
-  console.log(`\nwasm (Node ${process.version}) flow-guided animation: vortex (strength 2), ${flowFrames} frames, default options (lambda 0.2, sizes [16, 8], 3 iterations)`);
-  console.log(`${'exemplar'.padEnd(12)} ${'frame'.padEnd(8)} ${pad('first ms', 9)} ${pad('ms/frame', 9)} ${pad('max ms', 8)} ${pad('fps', 6)} ${pad('coherence', 10)} ${pad('mean x1st', 9)} ${pad('max x1st', 9)} ${pad('naive x1st', 10)}`);
+  console.log(`\nwasm (Node ${process.version}) flow-guided animation: vortex (strength 2), ${flowFrames} frames, default options (lambda 0.2, sizes [32, 16, 8], 3 iterations); 'step' is the longest step of any frame`);
+  console.log(`${'exemplar'.padEnd(12)} ${'frame'.padEnd(8)} ${pad('first ms', 9)} ${pad('ms/frame', 9)} ${pad('max ms', 8)} ${pad('step ms', 8)} ${pad('fps', 6)} ${pad('coherence', 10)} ${pad('mean x1st', 9)} ${pad('max x1st', 9)} ${pad('naive x1st', 10)}`);
   for (const name of samples) {
     for (const size of flowSizes) {
       const anim = new FlowAnimation(exemplars[name], { outputWidth: size, outputHeight: size, frames: flowFrames });
@@ -86,9 +86,12 @@ if (methods.includes('flow')) {
       const frameTimes = [];
       const coherences = [];
       let first = 0;
+      let longestStep = 0;
       let t = performance.now();
       while (!anim.done) {
+        const before = performance.now();
         const event = anim.step();
+        longestStep = Math.max(longestStep, performance.now() - before);
         if (event.frameFinished) {
           const now = performance.now();
           if (event.frame === 0) first = now - t;
@@ -105,7 +108,7 @@ if (methods.includes('flow')) {
       const mean = frameTimes.reduce((a, b) => a + b, 0) / frameTimes.length;
       const later = coherences.slice(1);
       const rel = (c) => (c / coherences[0]).toFixed(2);
-      console.log(`${name.padEnd(12)} ${`${size}x${size}`.padEnd(8)} ${pad(first.toFixed(0), 9)} ${pad(mean.toFixed(1), 9)} ${pad(Math.max(...frameTimes).toFixed(1), 8)} ${pad((1000 / mean).toFixed(1), 6)} ${pad(coherences[0].toExponential(2), 10)} ${pad(rel(later.reduce((a, b) => a + b, 0) / later.length), 9)} ${pad(rel(Math.max(...later)), 9)} ${pad(rel(naive), 10)}`);
+      console.log(`${name.padEnd(12)} ${`${size}x${size}`.padEnd(8)} ${pad(first.toFixed(0), 9)} ${pad(mean.toFixed(1), 9)} ${pad(Math.max(...frameTimes).toFixed(1), 8)} ${pad(longestStep.toFixed(0), 8)} ${pad((1000 / mean).toFixed(1), 6)} ${pad(coherences[0].toExponential(2), 10)} ${pad(rel(later.reduce((a, b) => a + b, 0) / later.length), 9)} ${pad(rel(Math.max(...later)), 9)} ${pad(rel(naive), 10)}`);
       anim.free();
     }
   }
