@@ -603,7 +603,7 @@ export interface FeatureSynthesisOptions extends DetectFeaturesOptions {
    *  feature cost over the band where the patch meets the made output, seams that also pay for
    *  cutting curves (no warp); 'scan': the paper's patches in scan order, warped. Default: 'graphcut'. */
   placement?: 'graphcut' | 'scan';
-  /** Graph-cut placement: seam cost per pixel where the two patches disagree on a curve, 0..100. Default: 1. */
+  /** Graph-cut placement: seam cost per pixel where the two patches disagree on a curve, in units of the exemplar's feature contrast, 0..100. Default: 1. */
   seamFeatureWeight?: number;
   /** 16..128, at most the exemplar's side (scan placement). Default: 64. */
   patchSize?: number;

@@ -45,8 +45,10 @@ pub struct FeatureOptions {
     pub output_height: usize,
     /// How patches are laid down. Default: graph-cut placement.
     pub placement: FeaturePlacement,
-    /// Graph-cut placement: the seam cost per pixel where the two patches disagree on a feature
-    /// (colours are 0..1, so 1 is about a full black-to-white step). Default: 1.
+    /// Graph-cut placement: the seam cost per pixel where the two patches disagree on a feature,
+    /// in units of the exemplar's feature contrast (the mean colour step across its feature
+    /// curves, see `hybrid::feature_step`): 1 prices a broken feature like a visible cut across
+    /// one. Default: 1.
     pub seam_feature_weight: f32,
     /// Patch side (scan placement; graph-cut placement uses the whole exemplar, and the
     /// feature-cost band is as wide as the scan overlap). Default: 64, the top of the paper's 32 to 64: on the six structured samples
