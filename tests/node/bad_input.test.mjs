@@ -60,8 +60,8 @@ test('bad input to every JS entry point gives a named error or a documented resu
   const results = await runCorpus();
   const failed = results.filter((r) => !r.pass);
   const slowest = results.reduce((a, b) => (b.ms > (a?.ms ?? -1) ? b : a), null);
-  console.log(`# corpus: ${results.length} rows, ${failed.length} failed; slowest ${slowest?.name} ${slowest?.ms?.toFixed(0)} ms`);
-  for (const r of failed) console.log(`# FAIL [${r.index}] ${r.name}: ${r.why}`);
+  console.log(`corpus: ${results.length} rows, ${failed.length} failed; slowest ${slowest?.name} ${slowest?.ms?.toFixed(0)} ms`);
+  for (const r of failed) console.log(`FAIL [${r.index}] ${r.name}: ${r.why}`);
   assert.equal(failed.length, 0, failed.map((r) => `${r.name}: ${r.why}`).join('\n'));
   assert.ok(results.length > 300, `the corpus has ${results.length} rows`);
 });

@@ -1,5 +1,6 @@
 // THE table of what JavaScript can create: every session type and one-call function of the
-// package, how to make a tiny one from an options object, how to drive it a little, and each
+// package, how to make a tiny one from an options object (and optionally the caller's exemplar or
+// clip, `input`, which the caller then owns), how to drive it a little, and each
 // option it reads with the kind of value it takes. The bad-input corpus, the leak test and the
 // determinism tests are all generated from it, so a new option joins every one of them with one
 // line here (and a new session type with one entry).
@@ -37,9 +38,12 @@ const squareMask = (w, h) => {
   return mask;
 };
 
+/** What `make(options, input)` of a session type takes as `input`: a clip for video, else an exemplar. */
+export const inputFor = (kind) => (kind === 'VideoTextures' ? tinyClip() : ex());
+
 export const SESSIONS = {
   TextureOptimization: {
-    make: (o) => new api.TextureOptimization(ex(), over({ outputWidth: 24, outputHeight: 24, neighbourhoodSizes: [8, 4], iterations: 2 }, o)),
+    make: (o, input = ex()) => new api.TextureOptimization(input, over({ outputWidth: 24, outputHeight: 24, neighbourhoodSizes: [8, 4], iterations: 2 }, o)),
     options: {
       outputWidth: SIZE, outputHeight: SIZE, seed: SEED, levels: COUNT, neighbourhoodSizes: COUNTS,
       iterations: COUNT, r: REAL, mu: REAL, search: enumOf('patchmatch', 'kmeans-tree', 'exact'),
@@ -48,7 +52,7 @@ export const SESSIONS = {
     },
   },
   FlowAnimation: {
-    make: (o) => new api.FlowAnimation(ex(), over({ outputWidth: 16, outputHeight: 16, frames: 2, frameSizes: [8], frameIterations: 1 }, o)),
+    make: (o, input = ex()) => new api.FlowAnimation(input, over({ outputWidth: 16, outputHeight: 16, frames: 2, frameSizes: [8], frameIterations: 1 }, o)),
     options: {
       outputWidth: SIZE, outputHeight: SIZE, frames: COUNT, lambda: REAL, frameSizes: COUNTS,
       frameIterations: COUNT, seed: SEED, search: enumOf('patchmatch', 'kmeans-tree', 'exact'), r: REAL,
@@ -66,7 +70,7 @@ export const SESSIONS = {
     },
   },
   GraphcutTextures: {
-    make: (o) => new api.GraphcutTextures(ex(), over({ outputWidth: 40, outputHeight: 40, refinementPatches: 1 }, o)),
+    make: (o, input = ex()) => new api.GraphcutTextures(input, over({ outputWidth: 40, outputHeight: 40, refinementPatches: 1 }, o)),
     options: {
       outputWidth: SIZE, outputHeight: SIZE, seed: SEED, placement: enumOf('random', 'entire-patch', 'sub-patch'),
       k: REAL, errorRegion: COUNT, refinementPatches: COUNT, gradientCost: BOOL,
@@ -75,7 +79,7 @@ export const SESSIONS = {
     },
   },
   VideoTextures: {
-    make: (o) => new api.VideoTextures(tinyClip(), over({ fixedFrames: 2, transitionWindow: 4, refinementPatches: 0 }, o)),
+    make: (o, input = tinyClip()) => new api.VideoTextures(input, over({ fixedFrames: 2, transitionWindow: 4, refinementPatches: 0 }, o)),
     options: {
       mode: enumOf('loop', 'offsets', 'extend'), outputWidth: SIZE, outputHeight: SIZE, outputFrames: SIZE,
       fixedFrames: COUNT, transitionWindow: COUNT, placement: enumOf('random', 'matching'), seed: SEED, k: REAL,
@@ -83,11 +87,11 @@ export const SESSIONS = {
     },
   },
   TileableSession: {
-    make: (o) => new api.TileableSession(ex(), o),
+    make: (o, input = ex()) => new api.TileableSession(input, o),
     options: { overlapX: COUNT, overlapY: COUNT, memoryBudgetMiB: BUDGET },
   },
   TextureBrush: {
-    make: (o) => new api.TextureBrush(ex(), over({ margin: 4 }, o)),
+    make: (o, input = ex()) => new api.TextureBrush(input, over({ margin: 4 }, o)),
     exercise: (brush) => {
       const reference = ex();
       brush.stroke(reference, squareMask(32, 32), 3, -2);
@@ -98,11 +102,11 @@ export const SESSIONS = {
     options: { nu: REAL, k1: REAL, k2: REAL, margin: COUNT, poisson: BOOL, memoryBudgetMiB: BUDGET },
   },
   LayerDesign: {
-    make: (o) => {
+    make: (o, input) => {
       const design = new api.LayerDesign(over({ outputWidth: 24, outputHeight: 24, patchSize: 8 }, o));
-      const layer = ex();
+      const layer = input ?? ex();
       design.addLayer(layer, [{ rotate: 90 }]);
-      layer.free();
+      if (!input) layer.free();
       return design;
     },
     options: {
@@ -111,7 +115,7 @@ export const SESSIONS = {
     },
   },
   FeatureSynthesis: {
-    make: (o) => new api.FeatureSynthesis(ex(), over({ outputWidth: 32, outputHeight: 32, patchSize: 16 }, o)),
+    make: (o, input = ex()) => new api.FeatureSynthesis(input, over({ outputWidth: 32, outputHeight: 32, patchSize: 16 }, o)),
     options: {
       outputWidth: SIZE, outputHeight: SIZE, placement: enumOf('graphcut', 'scan'), seamFeatureWeight: REAL,
       patchSize: SIZE, overlap: SIZE, featureWeight: REAL, warp: BOOL, tolerance: REAL, featureCandidates: SIZE,
@@ -124,13 +128,26 @@ export const SESSIONS = {
       ]),
     },
   },
+  // Positional arguments only (its bad values are rows of bad_calls.mjs): `noOptions`.
+  GraphcutMerge: {
+    noOptions: true,
+    make: (o, input) => {
+      const merge = new api.GraphcutMerge(24, 24, true);
+      const source = input ?? ex();
+      merge.addSource(source, 0, 0);
+      merge.addSource(source, 10, 6);
+      if (!input) source.free();
+      return merge;
+    },
+    options: {},
+  },
   // One-call functions that take an options object: the same corpus applies.
   makeTileable: {
     make: (o) => api.makeTileable(ex(), o),
     options: { overlapX: COUNT, overlapY: COUNT, memoryBudgetMiB: BUDGET },
   },
   detectFeatures: {
-    make: (o) => api.detectFeatures(ex(), o),
+    make: (o, input = ex()) => api.detectFeatures(input, o),
     options: { features: enumOf('edges', 'ridges', 'both'), threshold: REAL, alpha: REAL },
   },
   measureBrokenFeatures: {
