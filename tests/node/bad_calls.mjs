@@ -105,6 +105,9 @@ export const BAD_CALLS = [
   ['VideoClip: 1x1x1', () => api.VideoClip.fromFrames(1, 1, 1, new Uint8Array(4)), { either: /size|frame|small/ }],
   ['VideoClip: huge claimed', () => api.VideoClip.fromFrames(65536, 65536, 65536, new Uint8Array(16)), /size|length|expected|budget/],
   ['VideoTextures: 1x1x1 clip', () => new api.VideoTextures(api.VideoClip.fromFrames(1, 1, 1, new Uint8Array(4)), {}), { either: /size|frame|small|clip/ }],
+  // Found by the fuzz target `options`: the working-set estimate overflowed.
+  ['VideoTextures: extend to 65536^3', () => new api.VideoTextures(tinyClip(), { mode: 'extend', fixedFrames: 0, outputWidth: 65536, outputHeight: 65536, outputFrames: 65536 }), 'output'],
+  ['VideoTextures: extend to 65536x65536x2', () => new api.VideoTextures(tinyClip(), { mode: 'extend', fixedFrames: 0, outputWidth: 65536, outputHeight: 65536, outputFrames: 2 }), 'output'],
   ['VideoTextures: frameInto past the end', () => new api.VideoTextures(tinyClip(), {}).frameInto(1000, new Uint8Array(12 * 12 * 4)), /frame/],
   ['VideoTextures: frameInto short', () => new api.VideoTextures(tinyClip(), {}).frameInto(0, new Uint8Array(3)), /length|expected/],
   ['VideoTextures: sliceXt past the bottom', () => new api.VideoTextures(tinyClip(), {}).sliceXt(1000), /row|y/],

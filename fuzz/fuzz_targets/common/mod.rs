@@ -85,7 +85,6 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
     let v = values;
     match u.int_in_range(0u8..=8)? {
         0 => {
-            let d = optimization::Options::default();
             let n = u.int_in_range(0..=3)?;
             let mut sizes = Vec::new();
             for _ in 0..n {
@@ -111,7 +110,6 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                 ])?,
                 wavelet_detail_weight: real(u, 4.0, v)?,
                 memory_budget_mib: BUDGET_MIB,
-                ..d
             };
             if let Ok(mut s) = optimization::Session::new(ex, o) {
                 for _ in 0..steps {

@@ -170,6 +170,9 @@ impl Options {
                         ),
                     ));
                 }
+                // Bounded before the working set multiplies the sizes (fuzz target `options`:
+                // 'extend' to a huge output overflowed the estimate, a panic).
+                super::budget::check_volume("output", width, height, frames)?;
                 Ok((width, height, frames))
             }
         }
