@@ -3,6 +3,7 @@
 // truncated or lying about their size, 1x1 and huge sizes, NaN and strings where numbers belong,
 // buffers of the wrong length or type. Each row: [what, call, expectation] (see corpus.mjs).
 import { api, sampleBytes, tinyClip, tinyExemplar } from './fixtures.mjs';
+import { exercise } from './sessions.mjs';
 
 const png = sampleBytes('brick_64');
 /** The PNG with its IHDR width and height replaced (a header that lies about the size). */
@@ -161,6 +162,9 @@ export const BAD_CALLS = [
   }, /feature map|size/],
   ['FeatureSynthesis.withFeatureMap: an Exemplar as map', () => api.FeatureSynthesis.withFeatureMap(ex(), ex(), {}), /FeatureMap/],
   ['FeatureSynthesis: patch larger than the exemplar', () => new api.FeatureSynthesis(ex(), { patchSize: 64, outputWidth: 64, outputHeight: 64 }), /patch|exemplar/],
+  // Found by the fuzz target `session_steps` (a panic natively): graph-cut placement fills an
+  // output narrower than one patch.
+  ['FeatureSynthesis: output narrower than a patch', () => exercise(new api.FeatureSynthesis(ex(), { outputWidth: 8, outputHeight: 40, patchSize: 16 })), OK],
   ['FeatureSynthesis: overlap larger than the patch', () => new api.FeatureSynthesis(ex(), { patchSize: 16, overlap: 16 }), 'overlap'],
   ['measureBrokenFeatures: short pixels', () => api.measureBrokenFeatures(ex(), rgba(2, 2), 3, 3, {}), 'expected 36'],
   ['measureBrokenFeatures: 1x1', () => api.measureBrokenFeatures(ex(), rgba(1, 1), 1, 1, {}), { either: /size|small/ }],
