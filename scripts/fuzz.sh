@@ -3,8 +3,8 @@
 # another, and prints one line per target: its run time, executions and crashes. Needs a nightly
 # toolchain and cargo-fuzz (installed here from crates.io when missing); without nightly it says
 # so and exits 0, so that CI can call it unconditionally. A crash leaves its input under
-# fuzz/artifacts/TARGET/; turn it into a regression test (tests/node/bad_calls.mjs or a Rust test)
-# before fixing it.
+# fuzz/artifacts/TARGET/; copy it to fuzz/regressions/TARGET/ (replayed by every run) and turn it
+# into a regression test (a row of tests/node/bad_calls.mjs or a Rust test) before fixing it.
 #
 # Usage: ./scripts/fuzz.sh [SECONDS] [TARGET...]
 set -uo pipefail
@@ -30,7 +30,12 @@ for target in "${targets[@]}"; do
   log="$(mktemp)"
   # -rss_limit_mb: a session within its 64 MiB budget stays far below; -timeout: one input
   # running longer than 10 s counts as a hang.
-  if cargo +nightly fuzz run "$target" -- -max_total_time="$seconds" -timeout=10 \
+  # New inputs go to the first corpus folder; fuzz/regressions/TARGET holds every crash found so
+  # far (kept in git), so that each run starts by replaying them.
+  seeds=()
+  [ -d "fuzz/regressions/$target" ] && seeds=("$ROOT/fuzz/regressions/$target")
+  if cargo +nightly fuzz run "$target" "$ROOT/fuzz/corpus/$target" "${seeds[@]}" -- \
+       -max_total_time="$seconds" -timeout=10 \
        -rss_limit_mb=2048 -max_len=4096 >"$log" 2>&1; then
     status="0 crashes"
   else
