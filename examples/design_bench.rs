@@ -123,6 +123,7 @@ fn main() {
             TileableOptions {
                 overlap_x: overlap,
                 overlap_y: overlap,
+                memory_budget_mib: None,
             },
         )
         .expect("tileable");

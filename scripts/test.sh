@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs every test: native `cargo test`, the package build, wasm-bindgen-test in Node and headless
-# Chromium, and the browser end-to-end tests (Playwright) plus the npm-pack install test.
+# Chromium, the package's reliability tests in Node (tests/node: bad-input corpus, leaks,
+# determinism), and the browser end-to-end tests (Playwright) plus the npm-pack install test.
 # Installs what is missing first. The last line is the summary: "N passed, N failed".
 set -uo pipefail
 source "$(dirname "$0")/lib/ensure.sh"
@@ -21,6 +22,8 @@ stage() { # name, command...
 stage native cargo test --tests --lib
 stage build ./scripts/build.sh
 stage wasm cargo test --target wasm32-unknown-unknown --tests
+# The package in Node: the bad-input corpus, the leak test, determinism (tests/node/).
+stage node node --test --test-concurrency=1 tests/node/
 stage e2e node --test --test-concurrency=1 tests/e2e/
 
 # Count what the runners reported: cargo's "test result: ... N passed; M failed" lines and

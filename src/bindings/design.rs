@@ -106,6 +106,11 @@ fn read_steps(js: &OptionsReader, name: &'static str) -> JsResult<Option<Steps>>
     let Some(value) = js.value(name) else {
         return Ok(None);
     };
+    // Named here: the reader below would call a non-object just "options" (corpus row
+    // "deformationSet { rotation: 5 }").
+    if !value.is_object() {
+        return Err(invalid(name, "must be a range { from, to, step }"));
+    }
     let r = OptionsReader::new(&value, &["from", "to", "step"])?;
     let need = |v: Option<f64>, key: &str| {
         v.ok_or_else(|| {

@@ -10,6 +10,7 @@ use super::exemplar::Exemplar;
 use super::options::{OptionsReader, object};
 use super::pixels::render_into;
 use crate::core::Error;
+use crate::core::error::check_size;
 use crate::methods::flow::{
     Component, FlowEvent, FlowEventKind, FlowField, FlowKind, FlowOptions, FlowSession, FlowSource,
     FlowSpec,
@@ -216,6 +217,9 @@ pub fn flow_field(flow: JsValue, width: u32, height: u32, t: u32) -> JsResult<Fl
             "must be { type: 'vortex', ... } or { components: [...] }",
         ));
     }
+    // The size first: an unchecked 2^32 - 1 (what JS -1 becomes) overflowed the field's
+    // allocation, a trap (corpus rows "flowField: huge" and "flowField: -1 width").
+    check_size("flow field", width as usize, height as usize)?;
     let field = read_spec(&flow)?.field(width as usize, height as usize, t as usize)?;
     Ok(Float32Array::from(field.data()))
 }

@@ -60,9 +60,27 @@ fn invalid(name: &'static str, reason: &str) -> wasm_bindgen::JsError {
     .into()
 }
 
+/// Refuses a target that is not a byte array (`null`, a number, a plain array) before any method
+/// is called on it: reading `.length` of `null` would throw inside Rust, and a JS exception that
+/// unwinds through a `&self` method leaves the session borrowed for good ("recursive use of an
+/// object detected" on every later call). Found by the bad-input corpus (tests/node), rows
+/// "renderInto(null) leaves the session usable" and "Exemplar.renderInto: null".
+pub fn check_target(target: &JsValue) -> JsResult<()> {
+    if target.is_instance_of::<Uint8ClampedArray>() || target.is_instance_of::<js_sys::Uint8Array>()
+    {
+        Ok(())
+    } else {
+        Err(invalid(
+            "target",
+            "must be a Uint8ClampedArray or Uint8Array of width * height * 4 bytes",
+        ))
+    }
+}
+
 /// Writes the image as RGBA8 into the caller's array, which must be exactly `width * height * 4`
 /// long (the `data` of an `ImageData` of the image's size).
 pub fn render_into(image: &Image, target: &Uint8ClampedArray) -> JsResult<()> {
+    check_target(target)?;
     let expected = image.pixel_count() * 4;
     let actual = target.length() as usize;
     if actual != expected {
@@ -79,6 +97,7 @@ pub fn render_into(image: &Image, target: &Uint8ClampedArray) -> JsResult<()> {
 
 /// Copies ready-made RGBA8 pixels into the caller's array, checking its length.
 pub fn write_rgba(rgba: &[u8], target: &Uint8ClampedArray) -> JsResult<()> {
+    check_target(target)?;
     let actual = target.length() as usize;
     if actual != rgba.len() {
         return Err(Error::LengthMismatch {

@@ -7,6 +7,7 @@ use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
 use super::options::{OptionsReader, object};
+use super::pixels::check_target;
 use crate::core::Error;
 use crate::methods::video::teaching::{frame_rgba, seams_rgba, slice_xt_rgba};
 use crate::methods::video::{Event, Mode, Options, Placement, Session, Volume};
@@ -264,6 +265,7 @@ impl VideoTextures {
         rgba: &Uint8Array,
         draw: impl FnOnce(&Session, &mut [u8]) -> crate::core::Result<()>,
     ) -> JsResult<()> {
+        check_target(rgba)?;
         self.buffer.resize(rgba.length() as usize, 0);
         draw(&self.session, &mut self.buffer)?;
         rgba.copy_from(&self.buffer);

@@ -8,6 +8,7 @@ pub mod codec;
 pub mod error;
 pub mod gradient;
 pub mod image;
+pub mod math;
 pub mod pyramid;
 pub mod rng;
 pub mod sample;

@@ -23,7 +23,11 @@ pub struct ThinPlateSpline {
 }
 
 fn kernel(r2: f64) -> f64 {
-    if r2 <= 0.0 { 0.0 } else { r2 * r2.ln() }
+    if r2 <= 0.0 {
+        0.0
+    } else {
+        r2 * crate::core::math::ln(r2)
+    }
 }
 
 /// Why a spline could not be used.
@@ -82,7 +86,9 @@ impl ThinPlateSpline {
         };
         let misses = points.iter().any(|&((x, y), (dx, dy))| {
             let (fx, fy) = spline.at(x, y);
-            !fx.is_finite() || !fy.is_finite() || (fx - dx).hypot(fy - dy) > CONSTRAINT_TOLERANCE
+            !fx.is_finite()
+                || !fy.is_finite()
+                || crate::core::math::hypot(fx - dx, fy - dy) > CONSTRAINT_TOLERANCE
         });
         if misses {
             return Err(SplineFailure::MissesConstraints);

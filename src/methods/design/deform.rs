@@ -9,7 +9,7 @@
 //! centres map inside the source, and shrinks by area averaging so that nothing aliases.
 
 use crate::core::sample::{sample_bicubic, shrink_area};
-use crate::core::{Edge, Error, Image, Result};
+use crate::core::{Edge, Error, Image, Result, math};
 
 /// The smallest side a deformed texture may have: a neighbourhood of the syntheses must fit.
 pub const MIN_SIDE: usize = 8;
@@ -265,7 +265,7 @@ pub fn inscribed_size(w: f64, h: f64, angle: f64) -> (f64, f64) {
     if w <= 0.0 || h <= 0.0 {
         return (0.0, 0.0);
     }
-    let (s, c) = (angle.sin().abs(), angle.cos().abs());
+    let (s, c) = (math::sin(angle).abs(), math::cos(angle).abs());
     let (long, short) = if w >= h { (w, h) } else { (h, w) };
     if short <= 2.0 * s * c * long || (s - c).abs() < 1e-10 {
         let half = 0.5 * short;
@@ -300,7 +300,7 @@ fn rotate(image: &Image, degrees: f64) -> Result<Image> {
             reason: format!("a {w}x{h} sample turned by {degrees}° keeps no whole pixel"),
         });
     }
-    let (sin, cos) = (angle.sin(), angle.cos());
+    let (sin, cos) = (math::sin(angle), math::cos(angle));
     let (scx, scy) = ((w as f64 - 1.0) / 2.0, (h as f64 - 1.0) / 2.0);
     let (ocx, ocy) = ((ow as f64 - 1.0) / 2.0, (oh as f64 - 1.0) / 2.0);
     let c = image.channels();

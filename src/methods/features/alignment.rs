@@ -91,7 +91,7 @@ pub fn align(
     points.dedup_by(|a, b| a.0 == b.0);
     let largest = points
         .iter()
-        .map(|p| p.1.0.hypot(p.1.1))
+        .map(|p| crate::core::math::hypot(p.1.0, p.1.1))
         .fold(0.0f64, f64::max);
     let mut warp = Warp::fit(&points);
     // A spline overshoots between far-apart constraints; the paper wants "a small amount of
@@ -101,7 +101,7 @@ pub fn align(
         let overshoot = (0..size).step_by(4).any(|y| {
             (0..size).step_by(4).any(|x| {
                 let (dx, dy) = spline.at(x as f64, y as f64);
-                dx.hypot(dy) > 1.5 * largest + 0.25
+                crate::core::math::hypot(dx, dy) > 1.5 * largest + 0.25
             })
         });
         if overshoot {
@@ -121,7 +121,7 @@ pub fn align(
         for x in 0..size {
             let (dx, dy) = warp.at(x as f64, y as f64);
             let d = (dx as f32, dy as f32);
-            if !d.0.is_finite() || !d.1.is_finite() || d.0.hypot(d.1) > limit {
+            if !d.0.is_finite() || !d.1.is_finite() || crate::core::math::hypotf(d.0, d.1) > limit {
                 return Alignment {
                     kind: WarpKind::Skipped,
                     correspondences,

@@ -19,7 +19,7 @@ pub fn bilateral(
         for dx in -radius..=radius {
             let d2 = (dx * dx + dy * dy) as f32;
             spatial[((dy + radius) as usize) * side + (dx + radius) as usize] =
-                (-d2 / (2.0 * sigma_d * sigma_d)).exp();
+                crate::core::math::expf(-d2 / (2.0 * sigma_d * sigma_d));
         }
     }
     let range_scale = -1.0 / (2.0 * sigma_r * sigma_r);
@@ -41,7 +41,8 @@ pub fn bilateral(
                     }
                     let v = grey[(yy as usize) * width + xx as usize];
                     let d = v - centre;
-                    let w = row[(dx + radius) as usize] * (d * d * range_scale).exp();
+                    let w =
+                        row[(dx + radius) as usize] * crate::core::math::expf(d * d * range_scale);
                     sum += w * v;
                     norm += w;
                 }
@@ -72,8 +73,8 @@ mod tests {
                         }
                         let v = f64::from(grey[(yy as usize) * w + xx as usize]);
                         let d2 = ((xx - x).pow(2) + (yy - y).pow(2)) as f64;
-                        let wgt = (-d2 / (2.0 * sd * sd)).exp()
-                            * (-(v - c).powi(2) / (2.0 * sr * sr)).exp();
+                        let wgt = crate::core::math::exp(-d2 / (2.0 * sd * sd))
+                            * crate::core::math::exp(-(v - c).powi(2) / (2.0 * sr * sr));
                         s += wgt * v;
                         n += wgt;
                     }

@@ -97,7 +97,7 @@ pub fn bucket(angle: f32) -> usize {
 pub fn tangent_difference(a: f32, b: f32) -> f32 {
     let d = (a - b).abs().rem_euclid(std::f32::consts::PI);
     let d = d.min(std::f32::consts::PI - d);
-    2.0 * (d / 2.0).sin()
+    2.0 * crate::core::math::sinf(d / 2.0)
 }
 
 fn grey(image: &Image) -> Vec<f32> {
@@ -137,7 +137,7 @@ fn responses(image: &Image, kind: FeatureKind) -> (Vec<f32>, Vec<f32>) {
             let i = y as usize * w + x as usize;
             gx[i] = 0.5 * (at(x + 1, y) - at(x - 1, y));
             gy[i] = 0.5 * (at(x, y + 1) - at(x, y - 1));
-            let edge = gx[i].hypot(gy[i]);
+            let edge = crate::core::math::hypotf(gx[i], gy[i]);
             let ridge =
                 (at(x + 1, y) + at(x - 1, y) + at(x, y + 1) + at(x, y - 1) - 4.0 * at(x, y)).abs();
             response[i] = match kind {
@@ -164,7 +164,7 @@ fn responses(image: &Image, kind: FeatureKind) -> (Vec<f32>, Vec<f32>) {
                     jyy += gy[j] * gy[j];
                 }
             }
-            let gradient = 0.5 * (2.0 * jxy).atan2(jxx - jyy);
+            let gradient = 0.5 * crate::core::math::atan2f(2.0 * jxy, jxx - jyy);
             angle[y as usize * w + x as usize] =
                 (gradient + std::f32::consts::FRAC_PI_2).rem_euclid(std::f32::consts::PI);
         }
@@ -265,7 +265,7 @@ impl FeatureMap {
             for xx in
                 (x - r).floor().max(0.0) as usize..((x + r).ceil() as usize + 1).min(self.width)
             {
-                if (xx as f32 - x).hypot(yy as f32 - y) <= r {
+                if crate::core::math::hypotf(xx as f32 - x, yy as f32 - y) <= r {
                     self.mask[yy * self.width + xx] = on;
                 }
             }

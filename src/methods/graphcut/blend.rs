@@ -64,7 +64,8 @@ impl Synthesis {
                             continue;
                         }
                         mixed |= label != own;
-                        let g = (-((dx * dx + dy * dy) as f32) / (2.0 * sigma2)).exp();
+                        let g =
+                            crate::core::math::expf(-((dx * dx + dy * dy) as f32) / (2.0 * sigma2));
                         let value = self.patch_value(self.canvas.patches[label as usize], i);
                         for k in 0..c {
                             acc[k] += g * value[k];
@@ -106,7 +107,8 @@ impl Synthesis {
             .collect();
         present.sort_unstable();
         present.dedup();
-        let levels = SPLINE_LEVELS.min(1 + (w.min(h) as f32).log2().floor() as usize);
+        let levels =
+            SPLINE_LEVELS.min(1 + crate::core::math::log2f(w.min(h) as f32).floor() as usize);
         let mut bands: Vec<Image> = gaussian_pyramid(&self.canvas.pixels, levels, edge)?
             .iter()
             .map(|l| Image::new(l.width(), l.height(), c))

@@ -158,14 +158,17 @@ impl ScanWindow<'_> {
 }
 
 /// Patch origins along one side of a scan-order fill: every `step` pixels, the last one flush
-/// with the end.
+/// with the end. A side shorter than the patch gets the one origin 0: the scan fills check that
+/// the output holds a patch, but feature synthesis with graph-cut placement builds these origins
+/// without using them, for outputs of any size (fuzz target `session_steps`: `len - patch`
+/// overflowed there, a panic natively).
 #[must_use]
 pub fn scan_origins(len: usize, patch: usize, step: usize) -> Vec<usize> {
     let mut out: Vec<usize> = (0..)
         .map(|i| i * step)
         .take_while(|&o| o + patch < len)
         .collect();
-    out.push(len - patch);
+    out.push(len.saturating_sub(patch));
     out.dedup();
     out
 }
@@ -208,6 +211,11 @@ mod tests {
     fn scan_origins_cover_the_side_and_end_flush() {
         assert_eq!(scan_origins(100, 32, 27), vec![0, 27, 54, 68]);
         assert_eq!(scan_origins(32, 32, 27), vec![0]);
+        assert_eq!(
+            scan_origins(8, 16, 12),
+            vec![0],
+            "a side shorter than the patch"
+        );
         assert!(
             check_scan_geometry(20, 40, 32, 5, 2)
                 .unwrap_err()

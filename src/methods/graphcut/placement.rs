@@ -225,7 +225,7 @@ impl Synthesis {
         // Relative to the best cost, so the largest weight is 1 and nothing underflows to 0 everywhere.
         let weights: Vec<f64> = scored
             .iter()
-            .map(|c| (-(f64::from(c.cost) - f64::from(best)) / scale).exp())
+            .map(|c| crate::core::math::exp(-(f64::from(c.cost) - f64::from(best)) / scale))
             .collect();
         let total: f64 = weights.iter().sum();
         let mut pick = self.rng.next_f64() * total;

@@ -47,7 +47,8 @@ pub fn check_volume(what: &'static str, width: usize, height: usize, frames: usi
     if width.max(height).max(frames) > MAX_DIMENSION {
         return fail(format!("no dimension may exceed {MAX_DIMENSION}"));
     }
-    let bytes = (width * height) as u64 * frames as u64 * 12;
+    // In u64: 65536 x 65536 overflows a wasm32 usize.
+    let bytes = width as u64 * height as u64 * frames as u64 * 12;
     if bytes > MAX_VOLUME_BYTES as u64 {
         return fail(format!(
             "its colours alone take {} MiB, more than the largest memory budget, {} MiB",

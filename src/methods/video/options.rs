@@ -170,6 +170,19 @@ impl Options {
                         ),
                     ));
                 }
+                // Bounded before the working set multiplies the sizes in usize (fuzz target
+                // `options`: 'extend' to 65536^3 overflowed the estimate, a panic natively; in
+                // wasm32 it wrapped round and the session was accepted). Beyond 2^32 voxels no
+                // budget could hold it; below, the budget check names the sizes and the limit.
+                let voxels = width as u64 * height as u64 * (frames as u64 + k as u64);
+                if voxels > u64::from(u32::MAX) {
+                    return Err(invalid(
+                        "output size",
+                        format!(
+                            "{width}x{height}x{frames} is {voxels} voxels, far beyond any memory budget"
+                        ),
+                    ));
+                }
                 Ok((width, height, frames))
             }
         }

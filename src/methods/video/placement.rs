@@ -307,7 +307,10 @@ impl Synthesis {
             return Ok(Some(candidates[rng.index(candidates.len())]));
         }
         let scale = f64::from(k) * f64::from(sigma).powi(2);
-        let weights: Vec<f64> = costs.iter().map(|c| (-(c - best) / scale).exp()).collect();
+        let weights: Vec<f64> = costs
+            .iter()
+            .map(|c| crate::core::math::exp(-(c - best) / scale))
+            .collect();
         let mut pick = rng.next_f64() * weights.iter().sum::<f64>();
         for (p, w) in candidates.iter().zip(&weights) {
             if pick < *w {

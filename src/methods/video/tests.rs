@@ -335,3 +335,23 @@ fn bad_input_gives_named_errors() {
         .to_string();
     assert!(err.contains("at least 7 frames"), "{err}");
 }
+
+/// Regression (fuzz target `options`): an 'extend' output of 65536 a side overflowed the working
+/// set estimate (a panic natively, a wrapped-round estimate in wasm32) instead of being refused.
+#[test]
+fn a_huge_extended_output_is_refused_by_name() {
+    for (w, h, t) in [(65536, 65536, 65536), (65536, 65536, 2), (1 << 20, 8, 8)] {
+        let options = Options {
+            mode: Mode::Extend,
+            output_width: Some(w),
+            output_height: Some(h),
+            output_frames: Some(t),
+            fixed_frames: 0,
+            ..Options::default()
+        };
+        let err = Session::new(clip(8, 8, 6, 1), options)
+            .err()
+            .expect("refused");
+        assert!(err.to_string().contains("output"), "{err}");
+    }
+}

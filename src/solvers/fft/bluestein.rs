@@ -34,7 +34,7 @@ impl Bluestein {
             .map(|j| {
                 let phase = (j * j) % (2 * len as u64);
                 let angle = sign * std::f64::consts::PI * phase as f64 / len as f64;
-                C::new(angle.cos(), angle.sin())
+                C::new(crate::core::math::cos(angle), crate::core::math::sin(angle))
             })
             .collect();
         let forward = Fft::new(m, Direction::Forward);

@@ -176,7 +176,7 @@ pub fn is_smooth(n: usize) -> bool {
 /// (no recurrence), so every twiddle is accurate to the last bits.
 fn twiddle(numerator: usize, denominator: usize, direction: Direction) -> Complex<f64> {
     let angle = -2.0 * std::f64::consts::PI * (numerator as f64) / (denominator as f64);
-    let (sin, cos) = angle.sin_cos();
+    let (sin, cos) = (crate::core::math::sin(angle), crate::core::math::cos(angle));
     match direction {
         Direction::Forward => Complex::new(cos, sin),
         Direction::Inverse => Complex::new(cos, -sin),

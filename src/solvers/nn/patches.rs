@@ -54,7 +54,7 @@ pub fn gaussian_falloff(size: usize, dims: usize) -> Vec<f32> {
     for y in 0..size {
         for x in 0..size {
             let (dx, dy) = (x as f32 - centre, y as f32 - centre);
-            let g = (-(dx * dx + dy * dy) / (2.0 * sigma * sigma)).exp();
+            let g = crate::core::math::expf(-(dx * dx + dy * dy) / (2.0 * sigma * sigma));
             weights.extend(std::iter::repeat_n(g, dims));
         }
     }

@@ -33,7 +33,8 @@ impl Logistic {
 
     /// The next value made uniform in 0..1.
     pub fn next_uniform(&mut self) -> f64 {
-        (std::f64::consts::FRAC_2_PI * self.next_raw().sqrt().asin()).min(1.0 - 1e-12)
+        (std::f64::consts::FRAC_2_PI * crate::core::math::asin(self.next_raw().sqrt()))
+            .min(1.0 - 1e-12)
     }
 
     /// An index below `len` (0 when `len` is 0).

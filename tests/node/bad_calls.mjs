@@ -1,0 +1,184 @@
+// Bad arguments to the positional parameters of every function and method JavaScript can call
+// (the options objects are covered from the table of sessions.mjs): image files that are empty,
+// truncated or lying about their size, 1x1 and huge sizes, NaN and strings where numbers belong,
+// buffers of the wrong length or type. Each row: [what, call, expectation] (see corpus.mjs).
+import { api, sampleBytes, tinyClip, tinyExemplar } from './fixtures.mjs';
+import { exercise } from './sessions.mjs';
+
+const png = sampleBytes('brick_64');
+/** The PNG with its IHDR width and height replaced (a header that lies about the size). */
+const lyingPng = (w, h) => {
+  const bytes = png.slice();
+  const view = new DataView(bytes.buffer);
+  view.setUint32(16, w);
+  view.setUint32(20, h);
+  return bytes;
+};
+const ex = (side = 32) => tinyExemplar(side);
+const rgba = (w, h) => new Uint8ClampedArray(w * h * 4).fill(200);
+const OK = 'ok';
+
+export const BAD_CALLS = [
+  // Image files.
+  ['fromBytes: empty', () => api.Exemplar.fromBytes(new Uint8Array(0)), 'empty input'],
+  ['fromBytes: one byte', () => api.Exemplar.fromBytes(new Uint8Array([0x89])), 'could not decode'],
+  ['fromBytes: truncated PNG', () => api.Exemplar.fromBytes(png.slice(0, png.length >> 1)), 'could not decode'],
+  ['fromBytes: PNG header only', () => api.Exemplar.fromBytes(png.slice(0, 33)), 'could not decode'],
+  ['fromBytes: JPEG magic, no body', () => api.Exemplar.fromBytes(new Uint8Array([0xff, 0xd8, 0xff, 0xe0, 0, 16])), 'could not decode'],
+  ['fromBytes: text', () => api.Exemplar.fromBytes(new TextEncoder().encode('<html>not an image</html>')), 'could not decode'],
+  ['fromBytes: PNG claiming 100000x100000', () => api.Exemplar.fromBytes(lyingPng(100000, 100000)), /100000|could not decode/],
+  ['fromBytes: PNG claiming 2^31 x 1', () => api.Exemplar.fromBytes(lyingPng(2 ** 31, 1)), /could not decode|size/],
+  ['fromBytes: PNG claiming 0x0', () => api.Exemplar.fromBytes(lyingPng(0, 0)), /could not decode|size/],
+  ['fromBytes: PNG claiming 1x1', () => api.Exemplar.fromBytes(lyingPng(1, 1)), /could not decode/],
+  ['fromBytes: a string', () => api.Exemplar.fromBytes('not bytes'), /could not decode|empty|bytes/],
+  ['fromBytes: null', () => api.Exemplar.fromBytes(null), /./],
+  ['fromRgba: 0x0', () => api.Exemplar.fromRgba(new Uint8Array(0), 0, 0), '0x0'],
+  ['fromRgba: 1x1', () => api.Exemplar.fromRgba(new Uint8Array(4), 1, 1), OK],
+  ['fromRgba: short buffer', () => api.Exemplar.fromRgba(new Uint8Array(15), 2, 2), 'expected 16'],
+  ['fromRgba: 65536x65536 claimed', () => api.Exemplar.fromRgba(new Uint8Array(16), 65536, 65536), '65536x65536'],
+  ['fromRgba: NaN width', () => api.Exemplar.fromRgba(new Uint8Array(16), NaN, 2), 'size'],
+  ['fromRgba: -1 width', () => api.Exemplar.fromRgba(new Uint8Array(16), -1, 2), 'size'],
+  ['fromRgba: string width', () => api.Exemplar.fromRgba(new Uint8Array(16), 'two', 2), 'size'],
+  ['fromImageData: number', () => api.Exemplar.fromImageData(3), 'imageData'],
+  ['fromImageData: no data', () => api.Exemplar.fromImageData({ width: 2, height: 2 }), 'imageData.data'],
+  ['fromImageData: lying height', () => api.Exemplar.fromImageData({ width: 2, height: 3, data: new Uint8ClampedArray(16) }), 'expected 24'],
+  ['fromImageData: NaN width', () => api.Exemplar.fromImageData({ width: NaN, height: 2, data: new Uint8ClampedArray(16) }), 'imageData.width'],
+  ['fromImageData: plain array data', () => api.Exemplar.fromImageData({ width: 1, height: 1, data: [1, 2, 3, 4] }), 'imageData.data'],
+  // Exemplar methods.
+  ['resized: 0', () => ex().resized(0), 'maxSide'],
+  ['resized: NaN', () => ex().resized(NaN), 'maxSide'],
+  ['resized: -5', () => ex().resized(-5), 'maxSide'],
+  ['resized: 2.5', () => ex().resized(2.5), 'maxSide'],
+  // Positional number parameters take JavaScript's number conversion ('16' is 16, 'x' is NaN).
+  ['resized: numeric string', () => ex().resized('16'), OK],
+  ['resized: string', () => ex().resized('sixteen'), 'maxSide'],
+  ['resized: 1', () => ex().resized(1), OK],
+  ['resized: 1e300', () => ex().resized(1e300), OK],
+  ['cropped: outside', () => ex().cropped(30, 0, 8, 8), 'does not fit'],
+  ['cropped: negative x', () => ex().cropped(-1, 0, 8, 8), 'x'],
+  ['cropped: NaN width', () => ex().cropped(0, 0, NaN, 8), 'width'],
+  ['cropped: zero height', () => ex().cropped(0, 0, 8, 0), 'crop'],
+  ['cropped: huge', () => ex().cropped(0, 0, 1e9, 1e9), /crop|fit|size/],
+  ['cropped: 1x1', () => ex().cropped(31, 31, 1, 1), OK],
+  ['Exemplar.renderInto: short', () => ex().renderInto(new Uint8ClampedArray(10)), 'target pixel array'],
+  ['Exemplar.renderInto: null', () => ex().renderInto(null), 'target'],
+  ['Exemplar.renderInto: number', () => ex().renderInto(7), 'target'],
+  // measureQuality.
+  ['measureQuality: short pixels', () => api.measureQuality(ex(), rgba(4, 4), 5, 5), 'expected 100'],
+  ['measureQuality: 0x0', () => api.measureQuality(ex(), new Uint8Array(0), 0, 0), '0x0'],
+  ['measureQuality: 1x1', () => api.measureQuality(ex(), rgba(1, 1), 1, 1), /size|neighbourhood|small|./],
+  ['measureQuality: NaN size', () => api.measureQuality(ex(), rgba(4, 4), NaN, NaN), /size/],
+  ['measureQuality: 65536x65536 claimed', () => api.measureQuality(ex(), rgba(4, 4), 65536, 65536), /size/],
+  ['measureQuality: 1x1 exemplar', () => api.measureQuality(api.Exemplar.fromRgba(new Uint8Array(4), 1, 1), rgba(8, 8), 8, 8), { either: /size|exemplar|small/ }],
+  // flowField.
+  ['flowField: not an object', () => api.flowField('vortex', 8, 8, 0), 'flow'],
+  ['flowField: 0x0', () => api.flowField({ type: 'vortex' }, 0, 0, 0), 'size'],
+  ['flowField: huge', () => api.flowField({ type: 'vortex' }, 1e9, 1e9, 0), 'size'],
+  ['flowField: -1 width', () => api.flowField({ type: 'vortex' }, -1, 8, 0), 'size'],
+  ['flowField: t = 2^32 - 1', () => api.flowField({ type: 'vortex', period: 7 }, 8, 8, 2 ** 32 - 1), OK],
+  ['flowField: t = NaN', () => api.flowField({ type: 'vortex' }, 8, 8, NaN), OK],
+  // GraphcutMerge.
+  ['GraphcutMerge: 0x0', () => new api.GraphcutMerge(0, 0), 'size'],
+  ['GraphcutMerge: huge', () => new api.GraphcutMerge(1e6, 1e6), 'size'],
+  ['GraphcutMerge: step with no source', () => new api.GraphcutMerge(16, 16).step(), { either: /source/ }],
+  ['GraphcutMerge: mask too short', () => new api.GraphcutMerge(16, 16).setConstraints(new Uint8Array(10)), 'constraint mask'],
+  ['GraphcutMerge: mask names a missing source', () => {
+    const merge = new api.GraphcutMerge(16, 16);
+    merge.addSource(ex(), 0, 0);
+    merge.setConstraints(new Uint8Array(256).fill(9));
+    return merge.step();
+  }, { either: /source|constraint/ }],
+  ['GraphcutMerge: source far outside', () => {
+    const merge = new api.GraphcutMerge(16, 16);
+    merge.addSource(ex(), -(2 ** 31), 2 ** 31 - 1);
+    merge.addSource(ex(), 1e10, NaN);
+    for (let i = 0; i < 4 && !merge.done; i++) merge.step();
+    return merge.renderInto(rgba(16, 16));
+  }, { either: /source|position|outside/ }],
+  ['GraphcutMerge: nine sources', () => {
+    const merge = new api.GraphcutMerge(16, 16);
+    for (let i = 0; i < 9; i++) merge.addSource(ex(8), i, i);
+  }, 'at most 8 sources'],
+  ['GraphcutMerge: render into short', () => new api.GraphcutMerge(16, 16).renderInto(rgba(2, 2)), 'target pixel array'],
+  // VideoClip / VideoTextures views.
+  ['VideoClip: short frames', () => api.VideoClip.fromFrames(8, 8, 4, new Uint8Array(8 * 8 * 4 * 3)), /length|expected/],
+  ['VideoClip: zero frames', () => api.VideoClip.fromFrames(8, 8, 0, new Uint8Array(0)), /frame|size/],
+  ['VideoClip: 1x1x1', () => api.VideoClip.fromFrames(1, 1, 1, new Uint8Array(4)), { either: /size|frame|small/ }],
+  ['VideoClip: huge claimed', () => api.VideoClip.fromFrames(65536, 65536, 65536, new Uint8Array(16)), /size|length|expected|budget/],
+  ['VideoTextures: 1x1x1 clip', () => new api.VideoTextures(api.VideoClip.fromFrames(1, 1, 1, new Uint8Array(4)), {}), { either: /size|frame|small|clip/ }],
+  // Found by the fuzz target `options`: the working-set estimate overflowed.
+  ['VideoTextures: extend to 65536^3', () => new api.VideoTextures(tinyClip(), { mode: 'extend', fixedFrames: 0, outputWidth: 65536, outputHeight: 65536, outputFrames: 65536 }), 'output'],
+  ['VideoTextures: extend to 65536x65536x2', () => new api.VideoTextures(tinyClip(), { mode: 'extend', fixedFrames: 0, outputWidth: 65536, outputHeight: 65536, outputFrames: 2 }), 'output'],
+  ['VideoTextures: frameInto past the end', () => new api.VideoTextures(tinyClip(), {}).frameInto(1000, new Uint8Array(12 * 12 * 4)), /frame/],
+  ['VideoTextures: frameInto short', () => new api.VideoTextures(tinyClip(), {}).frameInto(0, new Uint8Array(3)), /length|expected/],
+  ['VideoTextures: sliceXt past the bottom', () => new api.VideoTextures(tinyClip(), {}).sliceXt(1000), /row|y/],
+  ['VideoTextures: seams past the end', () => new api.VideoTextures(tinyClip(), {}).seams(2 ** 32 - 1), /frame/],
+  // Texture design.
+  ['deformTexture: rotate NaN', () => api.deformTexture(ex(), { rotate: NaN }), 'rotate'],
+  ['deformTexture: scale 0', () => api.deformTexture(ex(), { scale: 0 }), 'scale'],
+  ['deformTexture: scale -1', () => api.deformTexture(ex(), { scale: -1 }), 'scale'],
+  ['deformTexture: scale 1e9', () => api.deformTexture(ex(), { scale: 1e9 }), /scale|size/],
+  ['deformTexture: scale 1e-9', () => api.deformTexture(ex(), { scale: 1e-9 }), /scale|size/],
+  ['deformTexture: shift of one', () => api.deformTexture(ex(), { shift: [1] }), 'shift'],
+  ['deformTexture: shift 1e300', () => api.deformTexture(ex(), { shift: [1e300, 0] }), 'shift'],
+  ['deformTexture: two in one', () => api.deformTexture(ex(), { rotate: 30, scale: 2 }), 'deformation'],
+  ['deformTexture: seventeen', () => api.deformTexture(ex(), new Array(17).fill({ mirror: true })), 'deformations'],
+  ['deformTexture: unknown', () => api.deformTexture(ex(), { twist: 3 }), "unknown option 'twist'"],
+  ['deformTexture: a string', () => api.deformTexture(ex(), 'rotate'), /deformation|options/],
+  ['deformTexture: 1x1 rotated 45', () => api.deformTexture(api.Exemplar.fromRgba(new Uint8Array(4), 1, 1), { rotate: 45 }), { either: /size|rotate|small/ }],
+  ['TextureBrush.stroke: short mask', () => new api.TextureBrush(ex(), {}).stroke(ex(), new Uint8Array(5), 0, 0), 'mask'],
+  ['TextureBrush.stroke: empty mask', () => new api.TextureBrush(ex(), {}).stroke(ex(), new Uint8Array(32 * 32), 0, 0), { either: /mask|paint/ }],
+  ['TextureBrush.stroke: far offset', () => {
+    const mask = new Uint8Array(32 * 32).fill(1);
+    return new api.TextureBrush(ex(), {}).stroke(ex(), mask, 2 ** 31 - 1, -(2 ** 31));
+  }, { either: /outside|offset|base|dx|window/ }],
+  ['TextureBrush.stroke: NaN offset', () => new api.TextureBrush(ex(), {}).stroke(ex(), new Uint8Array(32 * 32).fill(1), NaN, NaN), { either: /mask/ }],
+  ['TextureBrush.undo with nothing', () => new api.TextureBrush(ex(), {}).undo(), OK],
+  ['LayerDesign: step with no layer', () => new api.LayerDesign({ outputWidth: 16, outputHeight: 16, patchSize: 8 }).step(), 'layers'],
+  ['LayerDesign: layer smaller than a patch', () => new api.LayerDesign({ patchSize: 64 }).addLayer(ex(), undefined), 'patch size'],
+  ['LayerDesign: layout too short', () => new api.LayerDesign({ outputWidth: 16, outputHeight: 16, patchSize: 8 }).setLayout(new Uint8Array(3)), 'layout'],
+  ['LayerDesign: layout names a missing layer', () => {
+    const d = new api.LayerDesign({ outputWidth: 16, outputHeight: 16, patchSize: 8 });
+    d.addLayer(ex(), undefined);
+    d.setLayout(new Uint8Array(256).fill(200));
+    return d.step();
+  }, { either: /layout|layer/ }],
+  ['LayerDesign: seventeen layers', () => {
+    const d = new api.LayerDesign({ outputWidth: 16, outputHeight: 16, patchSize: 8 });
+    for (let i = 0; i < 17; i++) d.addLayer(ex(8), undefined);
+  }, 'at most 16 layers'],
+  ['LayerDesign: toExemplar before a step', () => new api.LayerDesign({ outputWidth: 16, outputHeight: 16, patchSize: 8 }).toExemplar(), 'has not stepped'],
+  ['TileableSession: result before done', () => new api.TileableSession(ex(), {}).result(), 'not done'],
+  ['makeTileable: overlap larger than the image', () => api.makeTileable(ex(), { overlapX: 40 }), /overlap/],
+  ['makeTileable: 1x1', () => api.makeTileable(api.Exemplar.fromRgba(new Uint8Array(4), 1, 1), {}), { either: /size|overlap|small/ }],
+  // Feature-guided synthesis.
+  ['FeatureMap.paint: NaN', () => api.detectFeatures(ex(), {}).paint(NaN, 0, 2, true), 'x'],
+  ['FeatureMap.paint: radius 1e9', () => api.detectFeatures(ex(), {}).paint(0, 0, 1e9, true), 'radius'],
+  ['FeatureMap.paint: far outside', () => api.detectFeatures(ex(), {}).paint(-1e30, 1e30, 3, true), OK],
+  ['FeatureMap.renderInto: short', () => api.detectFeatures(ex(), {}).renderInto(new Uint8ClampedArray(3)), 'target pixel array'],
+  ['FeatureSynthesis.withFeatureMap: map of another size', () => {
+    const map = api.detectFeatures(ex(16), {});
+    return api.FeatureSynthesis.withFeatureMap(ex(), map, { outputWidth: 32, outputHeight: 32, patchSize: 16 }).step();
+  }, /feature map|size/],
+  ['FeatureSynthesis.withFeatureMap: an Exemplar as map', () => api.FeatureSynthesis.withFeatureMap(ex(), ex(), {}), /FeatureMap/],
+  ['FeatureSynthesis: patch larger than the exemplar', () => new api.FeatureSynthesis(ex(), { patchSize: 64, outputWidth: 64, outputHeight: 64 }), /patch|exemplar/],
+  // Found by the fuzz target `session_steps` (a panic natively): graph-cut placement fills an
+  // output narrower than one patch.
+  ['FeatureSynthesis: output narrower than a patch', () => exercise(new api.FeatureSynthesis(ex(), { outputWidth: 8, outputHeight: 40, patchSize: 16 })), OK],
+  ['FeatureSynthesis: overlap larger than the patch', () => new api.FeatureSynthesis(ex(), { patchSize: 16, overlap: 16 }), 'overlap'],
+  ['measureBrokenFeatures: short pixels', () => api.measureBrokenFeatures(ex(), rgba(2, 2), 3, 3, {}), 'expected 36'],
+  ['measureBrokenFeatures: 1x1', () => api.measureBrokenFeatures(ex(), rgba(1, 1), 1, 1, {}), { either: /size|small/ }],
+  // Soft constraints of texture optimization.
+  ['setConstraints: wrong length', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).setConstraints(new Uint8Array(7), 1), 'constraint pixels'],
+  ['setConstraints: NaN lambda', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).setConstraints(new Uint8Array(16 * 16 * 4), NaN), 'lambda'],
+  ['setConstraints: lambda -1', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).setConstraints(new Uint8Array(16 * 16 * 4), -1), 'lambda'],
+  ['setConstraints: lambda 1e300', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).setConstraints(new Uint8Array(16 * 16 * 4), 1e300), 'lambda'],
+  ['setConstraints: lambda as a string', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).setConstraints(new Uint8Array(16 * 16 * 4), '1'), { either: 'lambda' }],
+  ['renderOffsetMap: short', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).renderOffsetMap(new Uint8ClampedArray(4)), /target pixel array|step/],
+  ['FlowAnimation.flowField: t huge', () => new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] }).flowField(2 ** 32 - 1), { either: 'flow' }],
+  ['FlowAnimation.renderNaiveInto: short', () => new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] }).renderNaiveInto(new Uint8ClampedArray(1)), 'target pixel array'],
+  // Objects of the wrong class where an Exemplar belongs.
+  ['a FeatureMap as an Exemplar', () => new api.TextureOptimization(api.detectFeatures(ex(), {}), {}), /Exemplar/],
+  ['a plain object as an Exemplar', () => new api.GraphcutTextures({ width: 8, height: 8 }, {}), /Exemplar/],
+  ['undefined as an Exemplar', () => new api.FlowAnimation(undefined, {}), /Exemplar|undefined/],
+];

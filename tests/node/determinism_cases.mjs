@@ -1,0 +1,40 @@
+// The determinism cases, the same names, samples and options as examples/determinism_hashes.rs
+// (the native side): keep the two lists in step. Small enough to run in a few seconds.
+import { api, sampleBytes } from './fixtures.mjs';
+
+const small = { outputWidth: 48, outputHeight: 48, seed: 3, neighbourhoodSizes: [16, 8], iterations: 3 };
+export const CASES = [
+  ...['gravel_64', 'tiles_64', 'brick_64', 'grass_64'].map((s) => ({ name: `optimization/${s}`, kind: 'TextureOptimization', sample: s, options: small })),
+  { name: 'optimization-haar/sand_64', kind: 'TextureOptimization', sample: 'sand_64', options: { ...small, energy: 'haar' } },
+  ...['gravel_64', 'tiles_64'].map((s) => ({ name: `graphcut/${s}`, kind: 'GraphcutTextures', sample: s, options: { outputWidth: 96, outputHeight: 96, seed: 3, refinementPatches: 4 } })),
+  { name: 'features/paving_64', kind: 'FeatureSynthesis', sample: 'paving_64', options: { outputWidth: 96, outputHeight: 96, patchSize: 32, seed: 3 } },
+  { name: 'layers/brick_64', kind: 'LayerDesign', sample: 'brick_64', options: { outputWidth: 96, outputHeight: 96, patchSize: 16, seed: 3 }, deformations: [{ rotate: 30 }] },
+];
+
+/** 32-bit FNV-1a as 8 hex digits, as the native example computes it. */
+export function fnv1a(bytes) {
+  let h = 0x811c9dc5;
+  for (const b of bytes) {
+    h ^= b;
+    h = Math.imul(h, 0x01000193) >>> 0;
+  }
+  return h.toString(16).padStart(8, '0');
+}
+
+/** Runs a case to the end in this thread; returns its RGBA output. */
+export function runCase({ kind, sample, options, deformations }) {
+  const exemplar = api.Exemplar.fromBytes(sampleBytes(sample));
+  let session;
+  if (kind === 'LayerDesign') {
+    session = new api.LayerDesign(options);
+    session.addLayer(exemplar, deformations);
+  } else {
+    session = new api[kind](exemplar, options);
+  }
+  while (!session.done) session.step();
+  const out = new Uint8ClampedArray(session.width * session.height * 4);
+  session.renderInto(out);
+  session.free();
+  exemplar.free();
+  return out;
+}
