@@ -5,7 +5,8 @@
 //! weights of sizes 4..32, 10% of `powf(d, -1.2)` over 1e-3..1e3), and a last-bit difference in
 //! a weight grows into a different output pixel. Calling the `libm` crate on every target runs
 //! the same Rust code natively as in wasm, so a native run reproduces the wasm output exactly
-//! (and the wasm output itself is unchanged: its std already uses this code).
+//! (and the wasm output itself is unchanged: its std already uses this code, so on wasm32 these
+//! call std, which keeps a second copy of the same functions out of the `.wasm`).
 //!
 //! Use these instead of the `f32`/`f64` methods in anything that feeds an output; `sqrt`, `abs`,
 //! `floor`, `min`/`max` and the arithmetic operators are exact under IEEE 754 and need nothing.
@@ -14,105 +15,210 @@
 #[inline]
 #[must_use]
 pub fn expf(x: f32) -> f32 {
-    libm::expf(x)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.exp()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::expf(x)
+    }
 }
 
 /// e^x.
 #[inline]
 #[must_use]
 pub fn exp(x: f64) -> f64 {
-    libm::exp(x)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.exp()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::exp(x)
+    }
 }
 
 /// x^y.
 #[inline]
 #[must_use]
 pub fn powf(x: f32, y: f32) -> f32 {
-    libm::powf(x, y)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.powf(y)
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::powf(x, y)
+    }
 }
 
 /// x^y.
 #[inline]
 #[must_use]
 pub fn pow(x: f64, y: f64) -> f64 {
-    libm::pow(x, y)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.powf(y)
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::pow(x, y)
+    }
 }
 
 /// Natural logarithm.
 #[inline]
 #[must_use]
 pub fn lnf(x: f32) -> f32 {
-    libm::logf(x)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.ln()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::logf(x)
+    }
 }
 
 /// Natural logarithm.
 #[inline]
 #[must_use]
 pub fn ln(x: f64) -> f64 {
-    libm::log(x)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.ln()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::log(x)
+    }
 }
 
 /// Base-2 logarithm.
 #[inline]
 #[must_use]
 pub fn log2f(x: f32) -> f32 {
-    libm::log2f(x)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.log2()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::log2f(x)
+    }
 }
 
 /// sin x, radians.
 #[inline]
 #[must_use]
 pub fn sinf(x: f32) -> f32 {
-    libm::sinf(x)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.sin()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::sinf(x)
+    }
 }
 
 /// cos x, radians.
 #[inline]
 #[must_use]
 pub fn cosf(x: f32) -> f32 {
-    libm::cosf(x)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.cos()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::cosf(x)
+    }
 }
 
 /// sin x, radians.
 #[inline]
 #[must_use]
 pub fn sin(x: f64) -> f64 {
-    libm::sin(x)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.sin()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::sin(x)
+    }
 }
 
 /// cos x, radians.
 #[inline]
 #[must_use]
 pub fn cos(x: f64) -> f64 {
-    libm::cos(x)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.cos()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::cos(x)
+    }
 }
 
 /// arcsin x.
 #[inline]
 #[must_use]
 pub fn asin(x: f64) -> f64 {
-    libm::asin(x)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.asin()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::asin(x)
+    }
 }
 
 /// The angle of (x, y), radians.
 #[inline]
 #[must_use]
 pub fn atan2f(y: f32, x: f32) -> f32 {
-    libm::atan2f(y, x)
+    #[cfg(target_arch = "wasm32")]
+    {
+        y.atan2(x)
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::atan2f(y, x)
+    }
 }
 
 /// sqrt(x^2 + y^2) without overflow.
 #[inline]
 #[must_use]
 pub fn hypotf(x: f32, y: f32) -> f32 {
-    libm::hypotf(x, y)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.hypot(y)
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::hypotf(x, y)
+    }
 }
 
 /// sqrt(x^2 + y^2) without overflow.
 #[inline]
 #[must_use]
 pub fn hypot(x: f64, y: f64) -> f64 {
-    libm::hypot(x, y)
+    #[cfg(target_arch = "wasm32")]
+    {
+        x.hypot(y)
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        libm::hypot(x, y)
+    }
 }
 
 #[cfg(test)]
