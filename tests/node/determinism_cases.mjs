@@ -5,6 +5,8 @@ import { api, sampleBytes } from './fixtures.mjs';
 const small = { outputWidth: 48, outputHeight: 48, seed: 3, neighbourhoodSizes: [16, 8], iterations: 3 };
 export const CASES = [
   ...['gravel_64', 'tiles_64', 'brick_64', 'grass_64'].map((s) => ({ name: `optimization/${s}`, kind: 'TextureOptimization', sample: s, options: small })),
+  // The default schedule and IRLS weights (r = 0.8, powf in every E-step).
+  ...['carpet_64', 'squares_64'].map((s) => ({ name: `optimization-default/${s}`, kind: 'TextureOptimization', sample: s, options: { outputWidth: 96, outputHeight: 96, seed: 3 } })),
   { name: 'optimization-haar/sand_64', kind: 'TextureOptimization', sample: 'sand_64', options: { ...small, energy: 'haar' } },
   ...['gravel_64', 'tiles_64'].map((s) => ({ name: `graphcut/${s}`, kind: 'GraphcutTextures', sample: s, options: { outputWidth: 96, outputHeight: 96, seed: 3, refinementPatches: 4 } })),
   { name: 'features/paving_64', kind: 'FeatureSynthesis', sample: 'paving_64', options: { outputWidth: 96, outputHeight: 96, patchSize: 32, seed: 3 } },

@@ -10,7 +10,7 @@
 
 use super::detect::FeatureMap;
 use super::matching::{FeatureIndex, TAU_MATCH};
-use crate::core::{Image, Result};
+use crate::core::{Image, Result, math};
 use crate::methods::graphcut::canvas::{Patch, UNCOVERED};
 use crate::methods::graphcut::placement::Candidate;
 use crate::methods::graphcut::source::Source;
@@ -273,7 +273,10 @@ pub fn feature_step(image: &Image, map: &FeatureMap) -> f32 {
     let (mut sum, mut n) = (0.0f64, 0usize);
     for (i, _) in map.mask.iter().enumerate().filter(|(_, m)| **m) {
         let (x, y) = ((i % map.width) as f32, (i / map.width) as f32);
-        let (nx, ny) = (-map.angle[i].sin() * 2.0, map.angle[i].cos() * 2.0);
+        let (nx, ny) = (
+            -math::sinf(map.angle[i]) * 2.0,
+            math::cosf(map.angle[i]) * 2.0,
+        );
         let at = |dx: f32, dy: f32| {
             let (px, py) = ((x + dx).round(), (y + dy).round());
             ((0.0..w).contains(&px) && (0.0..h).contains(&py))

@@ -126,7 +126,7 @@ impl FlowField {
     pub fn max_speed(&self) -> f32 {
         self.data
             .chunks_exact(2)
-            .map(|v| v[0].hypot(v[1]))
+            .map(|v| crate::core::math::hypotf(v[0], v[1]))
             .fold(0.0, f32::max)
     }
 }

@@ -118,12 +118,15 @@ impl Component {
     pub fn at(&self, x: f32, y: f32, width: usize, height: usize, t: f32) -> (f32, f32) {
         let radius = 0.5 * width.min(height) as f32;
         let s = if self.period > 0.0 {
-            self.strength * (std::f32::consts::TAU * t / self.period).cos()
+            self.strength * crate::core::math::cosf(std::f32::consts::TAU * t / self.period)
         } else {
             self.strength
         };
         let angle = (self.angle + self.turn * t).to_radians();
-        let (dx, dy) = (angle.cos(), angle.sin());
+        let (dx, dy) = (
+            crate::core::math::cosf(angle),
+            crate::core::math::sinf(angle),
+        );
         // Offsets from the centre, in units of R.
         let px = (x + 0.5 - self.center.0 * width as f32) / radius;
         let py = (y + 0.5 - self.center.1 * height as f32) / radius;

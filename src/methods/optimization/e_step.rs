@@ -283,7 +283,7 @@ pub fn robust_weight(squared_distance: f32, r: f32) -> f32 {
     if r == 2.0 {
         return 1.0;
     }
-    squared_distance.sqrt().max(MIN_DISTANCE).powf(r - 2.0)
+    crate::core::math::powf(squared_distance.sqrt().max(MIN_DISTANCE), r - 2.0)
 }
 
 /// Whether `Edge::Wrap` applies.

@@ -595,7 +595,10 @@ impl LevelSolver {
 
     fn normalised(&self, distances: &[f32]) -> f64 {
         let half_r = f64::from(self.setup.r) / 2.0;
-        let total: f64 = distances.iter().map(|&d| f64::from(d).powf(half_r)).sum();
+        let total: f64 = distances
+            .iter()
+            .map(|&d| crate::core::math::pow(f64::from(d), half_r))
+            .sum();
         total / (distances.len() * self.setup.size * self.setup.size) as f64
     }
 }

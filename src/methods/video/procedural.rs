@@ -12,8 +12,8 @@ pub fn waves(width: usize, height: usize, frames: usize, seed: u64) -> Result<Vo
     Volume::from_fn(width, height, frames, |x, y, t| {
         let g = grain[y * width + x];
         let (x, y, t) = (x as f32, y as f32, t as f32);
-        let a = (0.45 * x + 0.2 * y - 0.55 * t).sin();
-        let b = (0.17 * x - 0.38 * y + 0.31 * t + 1.0).sin();
+        let a = crate::core::math::sinf(0.45 * x + 0.2 * y - 0.55 * t);
+        let b = crate::core::math::sinf(0.17 * x - 0.38 * y + 0.31 * t + 1.0);
         [
             0.5 + 0.3 * a + g,
             0.5 + 0.2 * b + 0.1 * a,
