@@ -103,7 +103,7 @@ pub fn deform_texture(exemplar: &Exemplar, deformations: JsValue) -> JsResult<Ex
 }
 
 fn read_steps(js: &OptionsReader, name: &'static str) -> JsResult<Option<Steps>> {
-    let Some(value) = js.value(name) else {
+    let Some(value) = js.value(name)? else {
         return Ok(None);
     };
     // Named here: the reader below would call a non-object just "options" (corpus row

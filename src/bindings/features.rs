@@ -161,7 +161,7 @@ fn read_options(value: &JsValue) -> JsResult<FeatureOptions> {
     let js = OptionsReader::new(value, KNOWN)?;
     let d = FeatureOptions::default();
     let mut extra = Vec::new();
-    if let Some(v) = js.value("extraInputs") {
+    if let Some(v) = js.value("extraInputs")? {
         if !Array::is_array(&v) {
             return Err(invalid(
                 "extraInputs",
@@ -244,7 +244,7 @@ impl FeatureSynthesis {
     pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<FeatureSynthesis> {
         let parsed = read_options(&options)?;
         let js = OptionsReader::new(&options, KNOWN)?;
-        let map = match js.value("featureMask") {
+        let map = match js.value("featureMask")? {
             None => None,
             Some(v) => {
                 let Some(bytes) = v.dyn_ref::<js_sys::Uint8Array>() else {

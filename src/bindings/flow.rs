@@ -174,7 +174,7 @@ fn read_options(value: &JsValue) -> JsResult<(FlowOptions, FlowSource)> {
         tileable: js.boolean("tileable")?.unwrap_or(d.tileable),
     };
     let flow = read_flow(
-        js.value("flow"),
+        js.value("flow")?,
         options.output_width,
         options.output_height,
     )?;

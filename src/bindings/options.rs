@@ -51,18 +51,27 @@ impl OptionsReader {
     }
 
     /// The raw value of `name`, for options that are objects or typed arrays.
-    pub fn value(&self, name: &str) -> Option<JsValue> {
+    pub fn value(&self, name: &'static str) -> JsResult<Option<JsValue>> {
         self.get(name)
     }
 
-    fn get(&self, name: &str) -> Option<JsValue> {
-        let v = Reflect::get(&self.object, &name.into()).ok()?;
-        (!v.is_undefined() && !v.is_null()).then_some(v)
+    /// The value of `name`, None when absent. A getter that throws is an error naming the
+    /// option (caught here, so it cannot unwind through a session and leave it borrowed).
+    fn get(&self, name: &'static str) -> JsResult<Option<JsValue>> {
+        let v = Reflect::get(&self.object, &name.into()).map_err(|e| {
+            let why = e
+                .dyn_ref::<js_sys::Error>()
+                .map(|e| String::from(e.message()))
+                .or_else(|| e.as_string())
+                .unwrap_or_else(|| "it threw".into());
+            invalid(name, format!("could not be read: {why}"))
+        })?;
+        Ok((!v.is_undefined() && !v.is_null()).then_some(v))
     }
 
     /// A finite number.
     pub fn number(&self, name: &'static str) -> JsResult<Option<f64>> {
-        match self.get(name) {
+        match self.get(name)? {
             None => Ok(None),
             Some(v) => match v.as_f64() {
                 Some(n) if n.is_finite() => Ok(Some(n)),
@@ -85,7 +94,7 @@ impl OptionsReader {
     }
 
     pub fn boolean(&self, name: &'static str) -> JsResult<Option<bool>> {
-        match self.get(name) {
+        match self.get(name)? {
             None => Ok(None),
             Some(v) => v
                 .as_bool()
@@ -95,7 +104,7 @@ impl OptionsReader {
     }
 
     pub fn string(&self, name: &'static str) -> JsResult<Option<String>> {
-        match self.get(name) {
+        match self.get(name)? {
             None => Ok(None),
             Some(v) => v
                 .as_string()
@@ -106,7 +115,7 @@ impl OptionsReader {
 
     /// An array of whole numbers in `min..=max`.
     pub fn integers(&self, name: &'static str, min: u64, max: u64) -> JsResult<Option<Vec<u64>>> {
-        let Some(v) = self.get(name) else {
+        let Some(v) = self.get(name)? else {
             return Ok(None);
         };
         if !Array::is_array(&v) {
@@ -135,7 +144,7 @@ impl OptionsReader {
 impl OptionsReader {
     /// An array of finite numbers.
     pub fn numbers(&self, name: &'static str) -> JsResult<Option<Vec<f64>>> {
-        let Some(v) = self.get(name) else {
+        let Some(v) = self.get(name)? else {
             return Ok(None);
         };
         if !Array::is_array(&v) {

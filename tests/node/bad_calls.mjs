@@ -18,7 +18,15 @@ const ex = (side = 32) => tinyExemplar(side);
 const rgba = (w, h) => new Uint8ClampedArray(w * h * 4).fill(200);
 const OK = 'ok';
 
+/** Options whose `key` has a getter that throws: the library must name the option (the corpus's
+ * option rows cannot carry a getter: their sessions spread the options into defaults). */
+const throwing = (key) => ({ get [key]() { throw new Error('getter failed'); } });
+
 export const BAD_CALLS = [
+  ['TextureOptimization: a throwing getter', () => new api.TextureOptimization(ex(), throwing('outputWidth')), 'outputWidth'],
+  ['FlowAnimation: a throwing getter', () => new api.FlowAnimation(ex(), throwing('lambda')), 'lambda'],
+  ['GraphcutTextures: a throwing getter', () => new api.GraphcutTextures(ex(), throwing('seed')), 'seed'],
+  ['FeatureSynthesis: a throwing getter', () => new api.FeatureSynthesis(ex(), throwing('patchSize')), 'patchSize'],
   // Image files.
   ['fromBytes: empty', () => api.Exemplar.fromBytes(new Uint8Array(0)), 'empty input'],
   ['fromBytes: one byte', () => api.Exemplar.fromBytes(new Uint8Array([0x89])), 'could not decode'],
