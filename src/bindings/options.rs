@@ -37,8 +37,14 @@ impl OptionsReader {
                 "must be an object such as { outputWidth: 256 }",
             ));
         };
-        for key in Object::keys(object).iter() {
-            let key = key.as_string().unwrap_or_default();
+        // Reflect.ownKeys catches a Proxy's throwing trap (Object.keys would unwind through
+        // the wasm); symbol keys are not options and are passed over.
+        let keys = Reflect::own_keys(object)
+            .map_err(|_| invalid("options", "its keys could not be read"))?;
+        for key in keys.iter() {
+            let Some(key) = key.as_string() else {
+                continue;
+            };
             if !known.contains(&key.as_str()) {
                 let mut msg = Error::UnknownOption(key).to_string();
                 msg.push_str(&format!(" (known options: {})", known.join(", ")));

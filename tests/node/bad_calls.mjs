@@ -27,6 +27,7 @@ export const BAD_CALLS = [
   ['FlowAnimation: a throwing getter', () => new api.FlowAnimation(ex(), throwing('lambda')), 'lambda'],
   ['GraphcutTextures: a throwing getter', () => new api.GraphcutTextures(ex(), throwing('seed')), 'seed'],
   ['FeatureSynthesis: a throwing getter', () => new api.FeatureSynthesis(ex(), throwing('patchSize')), 'patchSize'],
+  ['TextureOptimization: a Proxy whose ownKeys throws', () => new api.TextureOptimization(ex(), new Proxy({}, { ownKeys() { throw new Error('trap failed'); } })), 'options'],
   // Image files.
   ['fromBytes: empty', () => api.Exemplar.fromBytes(new Uint8Array(0)), 'empty input'],
   ['fromBytes: one byte', () => api.Exemplar.fromBytes(new Uint8Array([0x89])), 'could not decode'],
