@@ -266,10 +266,7 @@ impl FlowSession {
     /// [`SPLIT_PIXELS`](optimization::iteration::SPLIT_PIXELS)), and the work between looks at
     /// the clock, for frame 0's synthesis too. Where iterations split changes no output.
     pub fn set_step_budget(&mut self, milliseconds: Option<f64>, chunk_work: usize) {
-        self.budget = StepBudget {
-            split: milliseconds.map(|ms| ms.max(0.0)),
-            chunk_work: chunk_work.max(1),
-        };
+        self.budget = StepBudget::new(milliseconds, chunk_work);
         if let Some(first) = &mut self.first {
             first.set_step_budget(milliseconds, chunk_work);
         }

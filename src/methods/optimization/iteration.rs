@@ -38,6 +38,16 @@ pub struct StepBudget {
 }
 
 impl StepBudget {
+    /// A budget of `milliseconds` per step (None: whole iterations) and `chunk_work` between
+    /// looks at the clock, clamped to sensible values (no negative time, at least 1 of work).
+    #[must_use]
+    pub fn new(milliseconds: Option<f64>, chunk_work: usize) -> StepBudget {
+        StepBudget {
+            split: milliseconds.map(|ms| ms.max(0.0)),
+            chunk_work: chunk_work.max(1),
+        }
+    }
+
     /// The default for an output of `pixels`: split above [`SPLIT_PIXELS`].
     #[must_use]
     pub fn for_pixels(pixels: usize) -> StepBudget {

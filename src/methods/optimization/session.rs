@@ -192,10 +192,7 @@ impl Session {
     /// clock (see [`CHUNK_WORK`](super::iteration::CHUNK_WORK)). Where iterations split
     /// changes no output.
     pub fn set_step_budget(&mut self, milliseconds: Option<f64>, chunk_work: usize) {
-        self.budget = StepBudget {
-            split: milliseconds.map(|ms| ms.max(0.0)),
-            chunk_work: chunk_work.max(1),
-        };
+        self.budget = StepBudget::new(milliseconds, chunk_work);
     }
 
     /// The estimated working set (see [`super::memory`]), with or without soft constraints.
