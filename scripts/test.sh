@@ -25,6 +25,9 @@ stage wasm cargo test --target wasm32-unknown-unknown --tests
 # The package in Node: the bad-input corpus, the leak test, determinism (tests/node/).
 stage node node --test --test-concurrency=1 tests/node/
 stage e2e node --test --test-concurrency=1 tests/e2e/
+# A short fuzzing smoke run (15 s per cargo-fuzz target); skipped with a message where the machine
+# has no nightly toolchain. The long runs are ./scripts/fuzz.sh SECONDS.
+stage fuzz ./scripts/fuzz.sh --smoke
 
 # Count what the runners reported: cargo's "test result: ... N passed; M failed" lines and
 # node's "# pass N" / "# fail N" lines.

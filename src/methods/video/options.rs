@@ -174,7 +174,10 @@ impl Options {
                 // `options`: 'extend' to 65536^3 overflowed the estimate, a panic natively; in
                 // wasm32 it wrapped round and the session was accepted). Beyond 2^32 voxels no
                 // budget could hold it; below, the budget check names the sizes and the limit.
-                let voxels = width as u64 * height as u64 * (frames as u64 + k as u64);
+                // (Saturating: three sizes near 2^32 overflow even u64, fuzz target `options` again.)
+                let voxels = (width as u64)
+                    .saturating_mul(height as u64)
+                    .saturating_mul(frames as u64 + k as u64);
                 if voxels > u64::from(u32::MAX) {
                     return Err(invalid(
                         "output size",

@@ -340,7 +340,14 @@ fn bad_input_gives_named_errors() {
 /// set estimate (a panic natively, a wrapped-round estimate in wasm32) instead of being refused.
 #[test]
 fn a_huge_extended_output_is_refused_by_name() {
-    for (w, h, t) in [(65536, 65536, 65536), (65536, 65536, 2), (1 << 20, 8, 8)] {
+    // The last: sizes near 2^32 overflowed even the u64 voxel count (fuzz smoke run in CI).
+    let big = u32::MAX as usize;
+    for (w, h, t) in [
+        (65536, 65536, 65536),
+        (65536, 65536, 2),
+        (1 << 20, 8, 8),
+        (big, big, big),
+    ] {
         let options = Options {
             mode: Mode::Extend,
             output_width: Some(w),
