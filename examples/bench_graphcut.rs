@@ -2,7 +2,8 @@
 //! Synthesises 256x256 from the samples with each placement mode and prints total time, time per
 //! placement (median, max), patches placed and the final total seam cost. `BENCH_SIZE=1024` and
 //! `BENCH_PLACEMENTS=entire-patch,sub-patch` pick the output size and placements. `scripts/bench.sh` runs
-//! this and the same cases as wasm in Node. `BENCH_WRITE=dir` also writes the outputs as PNGs.
+//! this and the same cases as wasm in Node. `BENCH_WRITE=dir` also writes the outputs as PNGs;
+//! `BENCH_QUALITY=1` prints the quality metrics of each output; `BENCH_SEED` sets the seed.
 
 use std::time::Instant;
 
@@ -43,6 +44,7 @@ fn main() {
                     placement,
                     output_width: size,
                     output_height: size,
+                    seed: std::env::var("BENCH_SEED").map_or(1, |v| v.parse().expect("BENCH_SEED")),
                     ..Options::default()
                 },
             )
@@ -59,6 +61,17 @@ fn main() {
             let total = start.elapsed().as_secs_f64() * 1e3;
             steps.sort_by(f64::total_cmp);
             let (median, max) = (steps[steps.len() / 2], steps[steps.len() - 1]);
+            if std::env::var("BENCH_QUALITY").is_ok() {
+                let q = texsynth::methods::quality::quality(
+                    &exemplar,
+                    &session.output().expect("output"),
+                )
+                .expect("quality");
+                println!(
+                    "  quality: coherence {:.5} completeness {:.5} histogram {:.5} flat {:.3}",
+                    q.coherence, q.completeness, q.histogram, q.flat
+                );
+            }
             if let Ok(dir) = std::env::var("BENCH_WRITE") {
                 let png = encode_png(&session.output().expect("output")).expect("png");
                 std::fs::write(

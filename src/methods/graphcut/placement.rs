@@ -29,15 +29,24 @@ pub struct Candidate {
 impl Synthesis {
     /// The region the next patch must cover. While the output is not covered: a square around
     /// the first uncovered pixel in scan order, so it holds both covered and uncovered pixels
-    /// and the texture grows consistently with what is there. Once covered: the square with the
-    /// largest total seam error.
+    /// and the texture grows consistently with what is there (its size and place:
+    /// [`Options::fill_region`]). Once covered: the square with the largest total seam error.
     #[must_use]
     pub fn error_region(&self) -> Region {
         let (ew, eh) = self.window_extent(0);
         let side = self.options.error_region_side(ew, eh);
         let (w, h) = (self.canvas.width, self.canvas.height);
-        let clamp = |c: usize, len: usize| c.saturating_sub(side / 2).min(len - side);
         if !self.canvas.is_covered() {
+            let smallest = (0..self.sources.len())
+                .map(|s| {
+                    let (pw, ph) = self.patch_extent(s);
+                    pw.min(ph)
+                })
+                .min()
+                .unwrap_or(side);
+            let (side, before) = self.options.fill_region(ew, eh, smallest);
+            let lead = (side as f32 * before) as usize;
+            let clamp = |c: usize, len: usize| c.saturating_sub(lead).min(len - side);
             let first = self.canvas.first_uncovered().expect("not covered");
             let (x, y) = (first % w, first / w);
             return Region {
