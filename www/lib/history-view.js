@@ -88,7 +88,9 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
       button.setAttribute('aria-label', `Show ${caption}`);
       button.title = caption;
       button.setAttribute('role', 'listitem');
-      button.append(entry.thumb);
+      const short = document.createElement('span');
+      short.textContent = entry.levelKey != null ? entry.label.split(' · ').at(-1) : `step ${entry.step}`;
+      button.append(entry.thumb, short);
       button.addEventListener('click', () => show(history.entries.indexOf(entry)));
       return button;
     }));
