@@ -16,8 +16,8 @@ const METHODS = [
   { key: 'optimization', name: 'Texture optimization', note: 'plain energy, Kwatra et al. 2005', kind: 'TextureOptimization', extra: { energy: 'pixels' } },
   { key: 'graphcut', name: 'Graph cut', note: 'Kwatra et al. 2003', kind: 'GraphcutTextures', extra: {} },
   { key: 'features', name: 'Feature-guided', note: 'Wu & Yu 2004', kind: 'FeatureSynthesis', extra: {} },
-  { key: 'haar', name: 'Haar energy', note: 'texture optimization with Haar wavelets, Shen et al. 2009', kind: 'TextureOptimization', extra: { energy: 'haar' } },
-  { key: 'daubechies', name: 'Daubechies energy', note: 'texture optimization with D4 wavelets, Shen et al. 2009', kind: 'TextureOptimization', extra: { energy: 'daubechies' } },
+  { key: 'haar', name: 'Haar energy', note: 'Haar wavelets, Shen et al. 2009', kind: 'TextureOptimization', extra: { energy: 'haar' } },
+  { key: 'daubechies', name: 'Daubechies energy', note: 'Daubechies D4, Shen et al. 2009', kind: 'TextureOptimization', extra: { energy: 'daubechies' } },
 ];
 
 const PRESETS = {
