@@ -228,6 +228,9 @@ async function main() {
   // Any edit, tab or sample choice: the URL follows once the page's own handlers have run.
   for (const type of ['input', 'change', 'click']) document.addEventListener(type, () => setTimeout(syncUrl, 0));
   $('copy-link').addEventListener('click', copyLink);
+  // A view toggled while an earlier step is shown (say, the teaching view): back to the live
+  // canvases first (capture phase: before the panel's own handler redraws over them).
+  $('method-options').addEventListener('change', () => state.history.goLive(), true);
   document.querySelector('.skip').addEventListener('click', (event) => {
     event.preventDefault();
     $('methods').querySelector('[aria-selected="true"]').focus();

@@ -32,8 +32,8 @@ export function setupInput({ samplesEl, uploadEl, dropEl, workingSizeEl, dialogE
     buttons.set(sample.id, button);
   }
 
-  // The 32 samples are one Tab stop; the arrow keys move in the 4-column grid.
-  rovingFocus(samplesEl, 'button', { columns: 4 });
+  // The 32 samples are one Tab stop; the arrow keys move in the grid.
+  rovingFocus(samplesEl, 'button', { grid: true });
   syncRoving(samplesEl, 'button', () => false);
 
   function select(id) {

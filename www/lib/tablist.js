@@ -10,15 +10,24 @@ export function syncRoving(container, selector, isCurrent) {
   for (const item of items) item.tabIndex = item === current ? 0 : -1;
 }
 
+/** How many items share the first item's row (the grid's columns as the CSS laid them out). */
+function columnsOf(items) {
+  const top = items[0]?.getBoundingClientRect().top;
+  const n = items.findIndex((item) => Math.abs(item.getBoundingClientRect().top - top) > 1);
+  return n < 0 ? items.length : n;
+}
+
 /**
- * Arrow keys move focus among `container`'s items (`selector`). `columns` > 1 makes it a grid:
- * Up and Down move by a row. Focus moves, and the moved-to item becomes the Tab stop.
+ * Arrow keys move focus among `container`'s items (`selector`). With `grid`, Up and Down move by
+ * a row of the grid as laid out (the samples show 4 or 8 to a row with the viewport's width).
+ * Focus moves, and the moved-to item becomes the Tab stop.
  */
-export function rovingFocus(container, selector, { columns = 1 } = {}) {
+export function rovingFocus(container, selector, { grid = false } = {}) {
   container.addEventListener('keydown', (event) => {
     const items = [...container.querySelectorAll(selector)];
     const at = items.indexOf(document.activeElement);
     if (at < 0) return;
+    const columns = grid ? columnsOf(items) : 1;
     const moves = {
       ArrowRight: 1, ArrowLeft: -1, Home: -at, End: items.length - 1 - at,
       ArrowDown: columns > 1 ? columns : 1, ArrowUp: columns > 1 ? -columns : -1,
