@@ -225,8 +225,15 @@ async function main() {
   await input.loadSample(wanted.sample ?? 'tiles_128');
   state.loaded = true;
   syncUrl();
-  // Any edit, tab or sample choice: the URL follows once the page's own handlers have run.
-  for (const type of ['input', 'change', 'click']) document.addEventListener(type, () => setTimeout(syncUrl, 0));
+  // Any edit, tab or sample choice: the URL follows once the page's own handlers have run,
+  // coalesced (dragging a slider would otherwise call replaceState faster than browsers allow).
+  let pendingSync = null;
+  for (const type of ['input', 'change', 'click']) {
+    document.addEventListener(type, () => {
+      clearTimeout(pendingSync);
+      pendingSync = setTimeout(syncUrl, 100);
+    });
+  }
   $('copy-link').addEventListener('click', copyLink);
   // A view toggled while an earlier step is shown (say, the teaching view): back to the live
   // canvases first (capture phase: before the panel's own handler redraws over them).

@@ -77,6 +77,7 @@ test('the scrubber puts back the pixels drawn at a step, with the plot marker on
   assert.deepEqual(await canvasPixels(page), drawn[1], 'step 2 comes back pixel for pixel');
   assert.ok((await markerInk(page)) > 20, 'the energy plot marks step 2');
   assert.match(await page.textContent('#history-info'), /showing step 2 · level 1\/\d/);
+  assert.match(await page.textContent('#to-readout'), /level 1\/\d+ .* iteration 2 · energy/, 'the readout is step 2\'s');
   await page.keyboard.press('ArrowRight');
   assert.deepEqual(await canvasPixels(page), drawn[2], 'and step 3');
 
@@ -93,6 +94,7 @@ test('the scrubber puts back the pixels drawn at a step, with the plot marker on
   assert.equal(await page.getAttribute('body', 'data-history-step'), 'live');
   assert.deepEqual(await canvasPixels(page), final);
   assert.equal(await markerInk(page), 0);
+  assert.match(await page.textContent('#to-readout'), /level (\d+)\/\1 /, 'the readout is live again');
   assert.deepEqual(errors, []);
 });
 
@@ -117,5 +119,23 @@ test('scrubbing while paused does not change the run', async () => {
   await page.waitForSelector('body[data-optimization-done="true"]', { timeout: 60_000 });
   assert.equal(await page.getAttribute('body', 'data-steps'), steps, 'the same number of steps');
   assert.deepEqual(await canvasPixels(page), interrupted, 'the same output as a run nobody scrubbed');
+  assert.deepEqual(errors, []);
+});
+
+test('for a method without levels the strip spreads up to 8 steps over the run', async () => {
+  const { page, errors } = demo;
+  await page.click('#tab-graphcut');
+  await page.click('#run');
+  await page.waitForSelector('body[data-graphcut-done="true"]', { timeout: 60_000 });
+  const patches = Number(await page.getAttribute('body', 'data-patches'));
+  const labels = await page.$$eval('#history-strip .thumb span', (s) => s.map((x) => x.textContent));
+  assert.ok(patches > 8, `${patches} placements`);
+  assert.equal(labels.length, 8, labels.join(', '));
+  assert.equal(labels[0], 'step 1');
+  assert.equal(labels.at(-1), `step ${patches}`, 'the newest is the last thumbnail');
+  // A thumbnail shows its step on the canvas and the seam-cost plot.
+  await page.click('#history-strip .thumb >> nth=3');
+  assert.equal(await page.getAttribute('body', 'data-history-step'), labels[3].replace('step ', ''));
+  await page.screenshot({ path: `${RESULTS}/history-graphcut.png`, fullPage: true });
   assert.deepEqual(errors, []);
 });

@@ -1,13 +1,19 @@
 // The history scrubber under the output: after every step the page copies what the panel drew
 // (its output canvas, or all of a panel's canvases) into a StepHistory; the range input moves
 // through the kept steps and puts that step's pixels back on the canvases, the panel's plots get
-// a marker on that step, and a strip of thumbnails jumps to the last image of each level. Only
-// canvases are touched, never the session, so scrubbing while paused cannot change the run; the
-// page returns to the live view before the next step (see main.js).
+// a marker on that step, and a strip of thumbnails jumps to the last image of each level. The
+// panel's readouts (`#side .readout`, and any element marked `data-history-text`) are kept with
+// each step too, so the words beside the picture are that step's. Only canvases and those texts
+// are touched, never the session, so scrubbing while paused cannot change the run; the page
+// returns to the live view before the next step (see main.js).
 import { HISTORY_BUDGET, StepHistory } from './history.js';
 import { markPlot, plotLength } from './plot.js';
 
 const MiB = 1024 * 1024;
+const TEXTS = '#side .readout, [data-history-text]';
+
+/** Copies of the readouts' contents (copies, so the live nodes and their listeners stay put). */
+const copyTexts = () => [...document.querySelectorAll(TEXTS)].map((el) => ({ el, nodes: [...el.childNodes].map((n) => n.cloneNode(true)) }));
 const THUMB_HEIGHT = 48;
 
 /** A short name for a step from its event: the method's level and energy where it has them. */
@@ -44,6 +50,7 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
   let steps = 0;
   let shown = null; // the entry on the canvases while scrubbing; null: the live view
   let liveImages = null; // what the canvases showed when scrubbing began
+  let liveTexts = null; // the readouts' own nodes then
 
   const grab = (list) => list.filter((c) => c.width > 0 && c.height > 0)
     .map((c) => ({ canvas: c, image: c.getContext('2d').getImageData(0, 0, c.width, c.height) }));
@@ -102,10 +109,12 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
     if (!entry) return;
     if (!shown) {
       liveImages = grab(canvases());
+      liveTexts = [...document.querySelectorAll(TEXTS)].map((el) => ({ el, nodes: [...el.childNodes] }));
       onScrub?.();
     }
     shown = entry;
     put(entry.images.map((image, k) => ({ canvas: entry.canvases[k], image })));
+    for (const { el, nodes } of entry.texts) if (el.isConnected) el.replaceChildren(...nodes.map((n) => n.cloneNode(true)));
     for (const { canvas, length } of entry.plots) markPlot(canvas, length - 1);
     describe();
   }
@@ -114,9 +123,11 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
   function goLive({ restore = true } = {}) {
     if (!shown) return;
     if (restore && liveImages) put(liveImages);
+    if (restore && liveTexts) for (const { el, nodes } of liveTexts) el.replaceChildren(...nodes);
     for (const { canvas } of shown.plots) markPlot(canvas, null);
     shown = null;
     liveImages = null;
+    liveTexts = null;
     describe();
   }
 
@@ -142,6 +153,7 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
         canvases: grabbed.map((g) => g.canvas),
         images: grabbed.map((g) => g.image),
         plots: plots().map((canvas) => ({ canvas, length: plotLength(canvas) })),
+        texts: copyTexts(),
         thumb: thumbnail(grabbed.map((g) => g.canvas)),
       });
       renderStrip();
