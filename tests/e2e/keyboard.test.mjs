@@ -3,7 +3,7 @@
 // panel has an accessible name (from Chromium's accessibility tree); focus is visible.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openDemo } from './harness.mjs';
+import { openDemo, RESULTS } from './harness.mjs';
 
 let demo;
 before(async () => {
@@ -51,6 +51,7 @@ test('keyboard only: a sample, the graph-cut tab, a small output, Run to done', 
   await page.keyboard.press('ArrowRight');
   assert.equal((await focused(page)).panel, 'graphcut');
   assert.equal(await page.getAttribute('#tab-graphcut', 'aria-selected'), 'false', 'arrows move focus only');
+  await page.screenshot({ path: `${RESULTS}/keyboard-focus.png`, clip: { x: 0, y: 0, width: 1400, height: 260 } });
   await page.keyboard.press('Enter');
   assert.equal(await page.getAttribute('#tab-graphcut', 'aria-selected'), 'true');
   assert.equal(await page.getAttribute('#method-options', 'aria-labelledby'), 'tab-graphcut');
