@@ -65,6 +65,7 @@ function setStatus(text) {
 }
 
 function resetPanel() {
+  state.resets = (state.resets ?? 0) + 1;
   state.runner?.pause();
   state.history?.clear();
   state.panel?.reset();
@@ -93,8 +94,15 @@ function selectPanel(module) {
     step: () => state.panel.step(),
     onStep: (event) => {
       clearError();
-      state.panel.onStep(event);
-      state.history.capture(event);
+      const drawn = state.panel.onStep(event);
+      // A panel that draws after fetching from the worker (video) returns that promise: the
+      // history copies the canvas once it is drawn, unless a reset came in between.
+      if (typeof drawn?.then === 'function') {
+        const resets = state.resets;
+        drawn.then(() => resets === state.resets && state.history.capture(event), () => {});
+      } else {
+        state.history.capture(event);
+      }
       setStatus(event.done ? 'done' : state.runner.running ? 'running…' : 'paused');
     },
     onDone: () => setStatus('done'),
