@@ -86,7 +86,15 @@ test('the scrubber puts back the pixels drawn at a step, with the plot marker on
   const levels = Number((await page.textContent('#to-readout')).match(/level \d+\/(\d+)/)[1]);
   assert.equal(thumbs.length, levels, `one thumbnail per level: ${thumbs.join(' | ')}`);
   await page.click('#history-strip .thumb >> nth=0');
-  assert.match(await page.getAttribute('body', 'data-history-step'), /^\d+$/);
+  const firstLevelEnd = await page.getAttribute('body', 'data-history-step');
+  assert.match(firstLevelEnd, /^\d+$/);
+  // The strip is one Tab stop on the thumbnail shown; arrows move along it, Enter shows.
+  await page.focus('#history-live');
+  await page.keyboard.press('Tab');
+  assert.equal(await page.evaluate(() => document.activeElement.getAttribute('aria-pressed')), 'true');
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('Enter');
+  assert.ok(Number(await page.getAttribute('body', 'data-history-step')) > Number(firstLevelEnd), 'the next level\'s last');
   await page.screenshot({ path: `${RESULTS}/history-scrubbed.png`, fullPage: true });
 
   // Back to live: the canvas shows the run's last image again and the marker goes.

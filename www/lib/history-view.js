@@ -8,6 +8,7 @@
 // returns to the live view before the next step (see main.js).
 import { HISTORY_BUDGET, StepHistory } from './history.js';
 import { markPlot, plotLength } from './plot.js';
+import { rovingFocus, syncRoving } from './tablist.js';
 
 const MiB = 1024 * 1024;
 const TEXTS = '#side .readout, [data-history-text]';
@@ -82,25 +83,40 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
     for (const button of strip.children) {
       button.setAttribute('aria-pressed', String(button.entry === (shown ?? history.entries.at(-1))));
     }
+    // The strip is one Tab stop (arrow keys move along it), on the thumbnail shown.
+    syncRoving(strip, '.thumb', (b) => b.getAttribute('aria-pressed') === 'true');
+  }
+
+  /** The strip's button for `entry`, made once, so a thumbnail that stays keeps its focus. */
+  function buttonOf(entry) {
+    if (entry.button) return entry.button;
+    const button = document.createElement('button');
+    button.type = 'button';
+    button.className = 'thumb';
+    button.entry = entry;
+    button.setAttribute('role', 'listitem');
+    const short = document.createElement('span');
+    short.textContent = entry.levelKey != null ? entry.label.split(' · ').at(-1) : `step ${entry.step}`;
+    button.append(entry.thumb, short);
+    button.addEventListener('click', () => show(history.entries.indexOf(entry)));
+    entry.button = button;
+    return button;
   }
 
   function renderStrip() {
     const newest = history.entries.at(-1);
-    strip.replaceChildren(...history.strip().map((entry) => {
-      const button = document.createElement('button');
-      button.type = 'button';
-      button.className = 'thumb';
-      button.entry = entry;
+    const buttons = history.strip().map((entry) => {
+      const button = buttonOf(entry);
       const caption = entry.levelEnd ? `${entry.label} (level's last)` : entry === newest ? `${entry.label} (newest)` : entry.label;
       button.setAttribute('aria-label', `Show ${caption}`);
       button.title = caption;
-      button.setAttribute('role', 'listitem');
-      const short = document.createElement('span');
-      short.textContent = entry.levelKey != null ? entry.label.split(' · ').at(-1) : `step ${entry.step}`;
-      button.append(entry.thumb, short);
-      button.addEventListener('click', () => show(history.entries.indexOf(entry)));
       return button;
-    }));
+    });
+    // Only what changed moves: the level ends stay in place while the newest changes each step.
+    buttons.forEach((button, i) => {
+      if (strip.children[i] !== button) strip.insertBefore(button, strip.children[i] ?? null);
+    });
+    while (strip.children.length > buttons.length) strip.lastElementChild.remove();
   }
 
   /** Shows kept step `index` (the newest index is still "scrubbing" until live is pressed). */
@@ -132,6 +148,7 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
   }
 
   range.addEventListener('input', () => show(Number(range.value)));
+  rovingFocus(strip, '.thumb');
   live.addEventListener('click', () => goLive());
 
   return {
