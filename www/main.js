@@ -36,7 +36,8 @@ function clearError() {
 
 // `sampleId` names the built-in sample shown (null for an upload); `loaded` turns the URL
 // updates on once the URL's own state has been restored.
-const state = { exemplar: null, sampleId: null, panel: null, panelId: null, runner: null, history: null, loaded: false };
+// `resets` counts resets, so a drawing that finishes after one is not put in the new history.
+const state = { exemplar: null, sampleId: null, panel: null, panelId: null, runner: null, history: null, loaded: false, resets: 0 };
 let syncTabs = () => {};
 
 const clampInt = (value, lo, hi, fallback) => {
@@ -65,7 +66,7 @@ function setStatus(text) {
 }
 
 function resetPanel() {
-  state.resets = (state.resets ?? 0) + 1;
+  state.resets += 1;
   state.runner?.pause();
   state.history?.clear();
   state.panel?.reset();
@@ -142,7 +143,10 @@ function syncUrl() {
     height: $('out-height').value,
     options: readOptions($('method-options')),
   });
-  if (query !== location.search) window.history.replaceState(null, '', query + location.hash);
+  if (query !== location.search) {
+    window.history.replaceState(null, '', query + location.hash);
+    $('share-status').textContent = ''; // "link copied" was about the link before this change
+  }
   $('share-link').value = location.href;
 }
 
