@@ -50,6 +50,20 @@ test('three methods side by side, each with metrics and time', async () => {
     assert.ok(f.coherence > 0 && f.coherence < 0.01, `${f.id} coherence ${f.coherence}`);
     assert.ok(f.distinct > 50, `${f.id} is a texture`);
   }
+  // The side table: a row per method, the best of each column marked.
+  const table = await page.$$eval('#cmp-table tbody tr', (rows) => rows.map((r) => ({
+    name: r.querySelector('th').textContent,
+    cells: [...r.querySelectorAll('td')].map((td) => ({ text: td.textContent, best: td.classList.contains('best') })),
+  })));
+  assert.deepEqual(table.map((r) => r.name), ['Texture optimization', 'Graph cut', 'Feature-guided']);
+  for (let c = 0; c < 4; c++) assert.ok(table.some((r) => r.cells[c].best), `column ${c} has a best`);
+  assert.match(table[0].cells[0].text, /^\d\.\de-\d$/);
+  assert.match(table[0].cells[3].text, /^\d+\.\d\d s$/);
+  // The canvases line up (the captions wrap differently).
+  const tops = await page.$$eval('.compare-item canvas', (cs) => cs.map((c) => Math.round(c.getBoundingClientRect().top)));
+  assert.equal(new Set(tops).size, 1, `canvas tops ${tops}`);
+  const fits = await page.$eval('#cmp-table', (t) => t.getBoundingClientRect().right <= t.closest('.panel').getBoundingClientRect().right);
+  assert.ok(fits, 'the table fits in the side panel');
   await page.screenshot({ path: `${RESULTS}/compare-methods.png`, fullPage: true });
 
   // The history keeps every canvas: its first step shows one started result and two empty ones.

@@ -37,6 +37,13 @@ const OPTIONS_HTML = `
 
 const SIDE_HTML = `
   <div class="readout" id="cmp-readout">pick two or more and press Run</div>
+  <table class="compare-table" id="cmp-table" hidden>
+    <caption>Side by side (lower is better; best in bold)</caption>
+    <thead><tr><th scope="col">method</th><th scope="col"><abbr title="coherence">coher.</abbr></th>
+      <th scope="col"><abbr title="completeness">compl.</abbr></th><th scope="col"><abbr title="histogram">hist.</abbr></th>
+      <th scope="col">time</th></tr></thead>
+    <tbody></tbody>
+  </table>
   <p class="legend">Each method runs on the same exemplar, seed and output size, with its defaults. The methods
   take turns: one step of each in the page's worker. Time is the wall time of that method's own steps (making the
   session included), so it does not count the others' turns. Quality: lower is better for every figure.</p>`;
@@ -72,10 +79,33 @@ export function createPanel(ui) {
       canvas: ui.$(`cmp-canvas-${method.key}`),
     }));
     ui.$('cmp-readout').textContent = runs.length < 2 ? 'pick two or more to compare' : `${runs.length} methods: press Run or Step`;
+    table();
     delete document.body.dataset.compareDone;
   }
 
   const options = (method) => ({ outputWidth: ui.outputWidth(), outputHeight: ui.outputHeight(), seed: ui.seed(), ...method.extra });
+
+  /** The figures of every finished method in one table, the best of each column in bold. */
+  function table() {
+    const done = runs.filter((r) => r.done && !r.error && r.figures);
+    ui.$('cmp-table').hidden = done.length === 0;
+    const columns = ['coherence', 'completeness', 'histogram', 'time'];
+    const best = Object.fromEntries(columns.map((c) => [c, Math.min(...done.map((r) => r.figures[c]))]));
+    ui.$('cmp-table').tBodies[0].replaceChildren(...done.map((run) => {
+      const row = document.createElement('tr');
+      const name = document.createElement('th');
+      name.scope = 'row';
+      name.textContent = run.method.name;
+      row.append(name, ...columns.map((c) => {
+        const cell = document.createElement('td');
+        const value = run.figures[c];
+        cell.textContent = c === 'time' ? `${(value / 1000).toFixed(2)} s` : value.toExponential(1);
+        if (done.length > 1 && value === best[c]) cell.className = 'best';
+        return cell;
+      }));
+      return row;
+    }));
+  }
 
   function timeText(run) {
     if (run.error) return `failed: ${run.error}`;
@@ -140,7 +170,16 @@ export function createPanel(ui) {
       if (run.session) drawInto(run.canvas, run.session);
       ui.$(`cmp-time-${run.method.key}`).textContent = timeText(run);
       ui.$('cmp-readout').textContent = runs.map((r) => `${r.method.name}: ${r.error ? 'failed' : r.done ? 'done' : `${r.steps} steps`}`).join(' · ');
-      if (event.methodDone) run.quality = showQuality(ui.$(`cmp-quality-${run.method.key}`), ui.exemplar(), run.session);
+      if (event.methodDone) {
+        const element = ui.$(`cmp-quality-${run.method.key}`);
+        const mine = generation;
+        run.quality = showQuality(element, ui.exemplar(), run.session).then(() => {
+          if (mine !== generation) return;
+          const figure = (name) => Number(element.dataset[name]);
+          run.figures = { coherence: figure('coherence'), completeness: figure('completeness'), histogram: figure('histogram'), time: run.time };
+          table();
+        });
+      }
       if (event.done) {
         const mine = generation;
         Promise.allSettled(runs.map((r) => r.quality)).then(() => {
