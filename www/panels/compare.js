@@ -7,7 +7,7 @@
 // method per step, so all of them are seen growing together.
 import { drawInto } from '../lib/canvas.js';
 import { showQuality } from '../lib/quality.js';
-import { remoteSession } from '../lib/worker.js';
+import { pageWorker, remoteSession } from '../lib/worker.js';
 
 export const id = 'compare';
 export const title = 'Compare';
@@ -138,6 +138,9 @@ export function createPanel(ui) {
       const active = runs.filter((r) => !r.done);
       if (runs.length < 2 || active.length === 0) return null;
       const run = active[turn++ % active.length];
+      // The worker's start (loading the wasm) is no method's time.
+      await pageWorker().ready;
+      if (mine !== generation) return null;
       const start = performance.now();
       let event;
       try {
