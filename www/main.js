@@ -10,6 +10,7 @@ import { createHistoryView } from './lib/history-view.js';
 import { setupInput } from './lib/input.js';
 import { plotLength } from './lib/plot.js';
 import { Runner } from './lib/runner.js';
+import { SAMPLES } from './lib/samples.js';
 import { setupTablist } from './lib/tablist.js';
 import { readOptions, readUrlState, urlQuery, writeOptions } from './lib/url-state.js';
 import * as compare from './panels/compare.js';
@@ -234,7 +235,8 @@ async function main() {
     onExemplar: setExemplar,
     onError: showError,
   });
-  await input.loadSample(wanted.sample ?? 'tiles_128');
+  // A link naming no sample, or one this build does not have, opens the default.
+  await input.loadSample(SAMPLES.some((s) => s.id === wanted.sample) ? wanted.sample : 'tiles_128');
   state.loaded = true;
   syncUrl();
   // Any edit, tab or sample choice: the URL follows once the page's own handlers have run,
