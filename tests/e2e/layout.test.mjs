@@ -50,3 +50,23 @@ for (const [panel, done] of Object.entries(RUNS)) {
     assert.deepEqual(errors, []);
   });
 }
+
+test('every panel (and design stage) fits both sizes before a run', async () => {
+  const { page, errors } = demo;
+  const tabs = await page.$$eval('#methods [role="tab"]', (t) => t.map((x) => x.dataset.panel));
+  const wide = [];
+  for (const [width, height] of [[1280, 720], [390, 844]]) {
+    await page.setViewportSize({ width, height });
+    for (const panel of tabs) {
+      await page.click(`#tab-${panel}`);
+      const stages = await page.$$eval('#method-options [role="tab"][data-stage]', (t) => t.map((x) => x.dataset.stage));
+      for (const stage of stages.length ? stages : [null]) {
+        if (stage) await page.click(`#method-options [data-stage="${stage}"]`);
+        const o = await overflow(page);
+        if (o.scrollWidth > o.innerWidth) wide.push(`${panel}${stage ? `/${stage}` : ''} at ${width}: ${o.scrollWidth} (${o.wide.join(', ')})`);
+      }
+    }
+  }
+  assert.deepEqual(wide, []);
+  assert.deepEqual(errors, []);
+});
