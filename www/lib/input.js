@@ -4,9 +4,11 @@
 import { Exemplar } from '../pkg/texsynth.js';
 import { setupLargeUpload } from './large-upload.js';
 import { SAMPLES } from './samples.js';
+import { rovingFocus, syncRoving } from './tablist.js';
 
 /**
- * Wires the input panel. `onExemplar(exemplar, label)` is called with each new exemplar;
+ * Wires the input panel. `onExemplar(exemplar, label, sampleId)` is called with each new exemplar
+ * (sampleId: the built-in sample's id, null for an upload);
  * `onError(message)` with the message of anything that failed to load.
  */
 export function setupInput({ samplesEl, uploadEl, dropEl, workingSizeEl, dialogEl, onExemplar, onError }) {
@@ -30,8 +32,13 @@ export function setupInput({ samplesEl, uploadEl, dropEl, workingSizeEl, dialogE
     buttons.set(sample.id, button);
   }
 
+  // The 32 samples are one Tab stop; the arrow keys move in the grid.
+  rovingFocus(samplesEl, 'button', { grid: true });
+  syncRoving(samplesEl, 'button', () => false);
+
   function select(id) {
     for (const [key, button] of buttons) button.setAttribute('aria-pressed', String(key === id));
+    if (id !== null) syncRoving(samplesEl, 'button', (b) => b.dataset.sample === id);
   }
 
   async function loadBytes(bytes, label, id = null) {
@@ -41,7 +48,7 @@ export function setupInput({ samplesEl, uploadEl, dropEl, workingSizeEl, dialogE
       const chosen = id === null ? await large.check(exemplar, label) : { exemplar, label };
       if (!chosen) return; // cancelled: the previous exemplar stays
       select(id);
-      onExemplar(chosen.exemplar, chosen.label);
+      onExemplar(chosen.exemplar, chosen.label, id);
     } catch (error) {
       onError(`${label}: ${error.message ?? error}`);
     }

@@ -1,5 +1,9 @@
 // Small line plots on a canvas: values against step, with vertical markers where a level starts,
-// or several series on one scale.
+// or several series on one scale. Each canvas remembers what it last drew, so the history
+// scrubber (www/lib/history.js) can redraw a panel's plot with a current-step marker without
+// knowing which panel drew it.
+
+const drawn = new WeakMap();
 
 /** Clears `canvas`, draws the title and axes for `values` (all series together, `length` steps
  * long) and returns the maps from step and value to canvas coordinates; null when empty. */
@@ -43,7 +47,8 @@ function line(ctx, values, x, y, color) {
  * Draws `values` (numbers) on `canvas`. `markers` is a list of { index, label } drawn as dashed
  * vertical lines (level changes). Axis labels give the range.
  */
-export function drawLinePlot(canvas, values, { markers = [], title = '', color = '#e0a458' } = {}) {
+export function drawLinePlot(canvas, values, { markers = [], title = '', color = '#e0a458', current = null } = {}) {
+  drawn.set(canvas, { draw: (at) => drawLinePlot(canvas, values, { markers, title, color, current: at }), length: values.length });
   const f = frame(canvas, values, values.length, title);
   if (!f) return;
   const { ctx, x, y, pad } = f;
@@ -63,13 +68,42 @@ export function drawLinePlot(canvas, values, { markers = [], title = '', color =
   line(ctx, values, x, y, color);
   ctx.fillStyle = color;
   values.forEach((v, i) => ctx.fillRect(x(i) - 1.5, y(v) - 1.5, 3, 3));
+  if (current !== null && current >= 0 && current < values.length) currentMarker(ctx, x(current), y(values[current]), pad, height);
+}
+
+/** The step the history scrubber shows: a solid vertical line and a ring on its point. */
+function currentMarker(ctx, px, py, pad, height) {
+  ctx.strokeStyle = '#7fd1ff';
+  ctx.lineWidth = 1.5;
+  ctx.beginPath();
+  ctx.moveTo(px, pad.top);
+  ctx.lineTo(px, height - pad.bottom);
+  ctx.stroke();
+  ctx.beginPath();
+  ctx.arc(px, py, 4, 0, 2 * Math.PI);
+  ctx.stroke();
+  ctx.lineWidth = 1;
+}
+
+/** How many points the plot last drawn on `canvas` has (for a multi-series plot: the series that
+ * grows last, i.e. the one being run); 0 when nothing was drawn. */
+export function plotLength(canvas) {
+  return drawn.get(canvas)?.length ?? 0;
+}
+
+/** Redraws the plot last drawn on `canvas` with the current-step marker at point `index`
+ * (null: no marker, the live view). Does nothing on a canvas no plot was drawn on. */
+export function markPlot(canvas, index) {
+  drawn.get(canvas)?.draw(index);
 }
 
 /**
  * Draws several series on one plot, each `{ values, color, label }`, on a shared scale (the
  * energy of plain, Haar and Daubechies runs, as in Fig. 5 of Shen et al. 2009).
  */
-export function drawLinePlots(canvas, series, { title = '' } = {}) {
+export function drawLinePlots(canvas, series, { title = '', current = null } = {}) {
+  const growing = [...series].reverse().find((s) => s.values.length > 0);
+  drawn.set(canvas, { draw: (at) => drawLinePlots(canvas, series, { title, current: at }), length: growing?.values.length ?? 0 });
   const longest = Math.max(0, ...series.map((s) => s.values.length));
   const f = frame(canvas, series.flatMap((s) => s.values), longest, title);
   if (!f) return;
@@ -79,6 +113,9 @@ export function drawLinePlots(canvas, series, { title = '' } = {}) {
     ctx.fillStyle = color;
     ctx.fillText(label, canvas.width - pad.right - 90, pad.top + 12 * (k + 1));
   });
+  if (growing && current !== null && current >= 0 && current < growing.values.length) {
+    currentMarker(ctx, x(current), y(growing.values[current]), pad, canvas.height);
+  }
 }
 
 function format(v) {

@@ -7,6 +7,8 @@ function write(element, q) {
     `completeness ${q.completeness.toExponential(2)} · histogram ${q.histogram.toExponential(2)} · ` +
     `flat ${(100 * q.flat).toFixed(1)}% (the exemplar itself: about 10%)`;
   element.dataset.coherence = String(q.coherence);
+  element.dataset.completeness = String(q.completeness);
+  element.dataset.histogram = String(q.histogram);
   element.dataset.flat = String(q.flat);
 }
 

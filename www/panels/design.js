@@ -1,6 +1,7 @@
 // The "Texture design" panel (Shen et al. 2009): a designer makes a family of textures from one
 // sample, stage by stage. Each stage is a module in ./design/; they share a gallery of designed
 // textures (the set S of the paper), from which the base and the reference are picked.
+import { setupTablist } from '../lib/tablist.js';
 import { Gallery } from './design/gallery.js';
 import * as deformStage from './design/deform.js';
 import * as brushStage from './design/brush.js';
@@ -16,6 +17,7 @@ const STAGES = [deformStage, brushStage, synthesisStage, layersStage, tileableSt
 export function createPanel(ui) {
   let gallery = null;
   let stage = null;
+  let syncStages = () => {};
   const context = { ui, get gallery() { return gallery; }, readout: (text) => { ui.$('ds-readout').textContent = text; } };
 
   function selectStage(module) {
@@ -26,6 +28,7 @@ export function createPanel(ui) {
     for (const button of ui.$('ds-stages').children) {
       button.setAttribute('aria-selected', String(button.dataset.stage === module.id));
     }
+    syncStages();
     document.body.dataset.designStage = module.id;
     context.readout(stage.hint);
     stage.mount();
@@ -35,15 +38,16 @@ export function createPanel(ui) {
     id,
     title,
     optionsHtml: `<nav class="stages" id="ds-stages" role="tablist" aria-label="Design stage">
-        ${STAGES.map((s, i) => `<button type="button" role="tab" data-stage="${s.id}">${i + 1}. ${s.title}</button>`).join('')}
+        ${STAGES.map((s, i) => `<button type="button" role="tab" aria-controls="ds-stage-options" data-stage="${s.id}">${i + 1}. ${s.title}</button>`).join('')}
       </nav>
-      <div class="method-options" id="ds-stage-options"></div>`,
+      <div class="method-options" id="ds-stage-options" role="tabpanel" aria-label="Stage options"></div>`,
     sideHtml: `<div class="readout" id="ds-readout"></div>
       <div id="ds-stage-side"></div>
       <h3 class="side-title">Designed textures <small>(B: base, R: reference)</small></h3>
       <div class="gallery" id="ds-gallery" role="list" aria-label="Designed textures"></div>`,
     mount() {
       gallery = new Gallery(ui.$('ds-gallery'), () => stage?.onSelection?.());
+      syncStages = setupTablist(ui.$('ds-stages'));
       for (const button of ui.$('ds-stages').children) {
         button.addEventListener('click', () => selectStage(STAGES.find((s) => s.id === button.dataset.stage)));
       }

@@ -262,8 +262,9 @@ export function createPanel(ui) {
       return current === session ? event : null;
     },
     onStep(event) {
-      // The runner does not wait for drawing; a failed fetch is shown, not thrown.
-      this.draw(event).catch((error) => { ui.$('vt-readout').textContent = `drawing failed: ${error.message ?? error}`; });
+      // The runner does not wait for drawing; a failed fetch is shown, not thrown. The promise is
+      // for the page's step history, which copies the canvas once the frame is drawn.
+      return this.draw(event).catch((error) => { ui.$('vt-readout').textContent = `drawing failed: ${error.message ?? error}`; });
     },
     async draw(event) {
       const frames = session.getter('frames');

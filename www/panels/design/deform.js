@@ -9,9 +9,9 @@ export const title = 'Deform';
 const range = (name, label, from, to, step, on) => `
   <span class="range" title="${label}: from, to, step">
     <label><input id="dd-${name}-on" type="checkbox" class="view" ${on ? 'checked' : ''}> ${label}</label>
-    <input id="dd-${name}-from" class="view" type="number" value="${from}" step="any">
-    <input id="dd-${name}-to" class="view" type="number" value="${to}" step="any">
-    <input id="dd-${name}-step" class="view" type="number" value="${step}" step="any">
+    <input id="dd-${name}-from" class="view" type="number" value="${from}" step="any" aria-label="${label}: from">
+    <input id="dd-${name}-to" class="view" type="number" value="${to}" step="any" aria-label="${label}: to">
+    <input id="dd-${name}-step" class="view" type="number" value="${step}" step="any" aria-label="${label}: step">
   </span>`;
 
 export function createStage({ ui, gallery, readout }) {
