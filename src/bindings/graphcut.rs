@@ -2,7 +2,7 @@
 //! and returns a plain event object; the image and the teaching views render into the caller's
 //! buffers.
 
-use js_sys::Uint8ClampedArray;
+use js_sys::{Float32Array, Uint8Array, Uint8ClampedArray};
 use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
@@ -215,6 +215,68 @@ impl GraphcutTextures {
         self.session
             .error_region()
             .map_or(JsValue::NULL, region_object)
+    }
+
+    /// Turns the placement anatomy on or off: while on, every placement keeps its cost surface
+    /// and its graph for `placementCosts()` and `placementGraph()` (off by default).
+    #[wasm_bindgen(js_name = setAnatomy)]
+    pub fn set_anatomy(&mut self, on: bool) {
+        self.session.set_anatomy(on);
+    }
+
+    /// The last placement's cost surface (eq. 2 or 4 over every candidate offset) and the
+    /// probability eq. 3 gives each: `{ x, y, width, height, cost: Float32Array (Infinity where
+    /// no unused candidate is), probability: Float32Array (sums to 1), chosenX, chosenY (grid
+    /// cell of the drawn offset), temperature (k sigma^2) }`, offsets in output coordinates of
+    /// the patch's corner (`x + column`); null unless `setAnatomy(true)` came before the step.
+    #[wasm_bindgen(js_name = placementCosts)]
+    pub fn placement_costs(&self) -> JsValue {
+        let Some(c) = self.session.placement_costs() else {
+            return JsValue::NULL;
+        };
+        let (cx, cy) = c.chosen.map_or((-1.0, -1.0), |(x, y)| (x as f64, y as f64));
+        object(&[
+            ("x", (c.x as f64).into()),
+            ("y", (c.y as f64).into()),
+            ("width", (c.width as u32).into()),
+            ("height", (c.height as u32).into()),
+            ("cost", Float32Array::from(c.cost.as_slice()).into()),
+            (
+                "probability",
+                Float32Array::from(c.probability.as_slice()).into(),
+            ),
+            ("chosenX", cx.into()),
+            ("chosenY", cy.into()),
+            ("temperature", c.temperature.into()),
+        ])
+    }
+
+    /// The last placement's seam graph per pixel of the patch's box: `{ x, y, width, height,
+    /// kind: Uint8Array (0 outside, 1 uncovered: takes the patch without a node, 2 free node, 3
+    /// held to the old output, 4 held to the new patch), right, down: Float32Array (arc
+    /// capacity to the right / lower neighbour, NaN: none), oldRight, oldDown: Float32Array (old
+    /// seam cost there, NaN: no old seam), taken: Uint8Array (1: took the new patch) }`; null
+    /// unless `setAnatomy(true)` came before the step.
+    #[wasm_bindgen(js_name = placementGraph)]
+    pub fn placement_graph(&self) -> JsValue {
+        let Some(g) = self.session.placement_graph() else {
+            return JsValue::NULL;
+        };
+        object(&[
+            ("x", (g.x as f64).into()),
+            ("y", (g.y as f64).into()),
+            ("width", (g.width as u32).into()),
+            ("height", (g.height as u32).into()),
+            ("kind", Uint8Array::from(g.kind.as_slice()).into()),
+            ("right", Float32Array::from(g.right.as_slice()).into()),
+            ("down", Float32Array::from(g.down.as_slice()).into()),
+            (
+                "oldRight",
+                Float32Array::from(g.old_right.as_slice()).into(),
+            ),
+            ("oldDown", Float32Array::from(g.old_down.as_slice()).into()),
+            ("taken", Uint8Array::from(g.taken.as_slice()).into()),
+        ])
     }
 
     /// Names of the sources patches come from ("exemplar", "rotate 90", "scale 0.5", ...).

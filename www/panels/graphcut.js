@@ -5,6 +5,7 @@ import { drawInto, drawOverlay, strokeRect } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
 import { showQuality } from '../lib/quality.js';
 import { remoteSession } from '../lib/worker.js';
+import { ANATOMY_HTML, describePixel, drawCosts, drawGraph } from './graphcut-anatomy.js';
 
 export const id = 'graphcut';
 export const title = 'Graphcut textures';
@@ -28,13 +29,15 @@ const OPTIONS_HTML = `
     <label><input id="gc-seams" class="view" type="checkbox" checked> seams</label>
     <label><input id="gc-heat" class="view" type="checkbox"> seam cost</label>
     <label><input id="gc-labels" class="view" type="checkbox"> labels</label>
+    <label title="the cost surface, the probabilities and the graph of each placement"><input id="gc-anatomy-on" class="view" type="checkbox"> placement anatomy</label>
   </span>`;
 
 const SIDE_HTML = `
   <div class="readout" id="gc-readout">press Run or Step</div>
   <canvas id="gc-plot" class="plot" width="296" height="170" aria-label="Seam cost plot"></canvas>
   <p class="quality" id="gc-quality"></p>
-  <p class="legend">Outline: the patch just placed (orange) and the error region it had to cover (dashed).</p>`;
+  <p class="legend">Outline: the patch just placed (orange) and the error region it had to cover (dashed).</p>
+  ${ANATOMY_HTML}`;
 
 // The session runs in the page's worker; these views come back with every step (the overlays only
 // while shown, all of them with the last step so that toggles after the run draw at once).
@@ -82,12 +85,15 @@ export function createPanel(ui) {
     }
   }
 
+  const anatomyOn = () => ui.$('gc-anatomy-on').checked;
+
   function wanted() {
     const views = ['renderInto'];
     if (ui.$('gc-seams').checked) views.push('renderSeams');
     if (ui.$('gc-heat').checked) views.push('renderSeamCost');
     if (ui.$('gc-labels').checked) views.push('renderLabels');
-    return { views, finalViews: ALL_VIEWS };
+    const calls = anatomyOn() ? ['placementCosts', 'placementGraph'] : [];
+    return { views, calls, finalViews: ALL_VIEWS, finalCalls: calls };
   }
 
   /** A view toggled on mid-run is fetched before it is drawn. */
@@ -97,6 +103,40 @@ export function createPanel(ui) {
     draw();
   }
 
+  /** The anatomy is recorded from the next placement on (the session keeps nothing otherwise). */
+  async function toggleAnatomy() {
+    ui.$('gc-anatomy').hidden = !anatomyOn();
+    if (session) await session.send('setAnatomy', anatomyOn());
+    if (!anatomyOn()) return;
+    ui.$('gc-graph-readout').textContent = session
+      ? 'recorded from the next placement on: press Step'
+      : 'press Run or Step';
+  }
+
+  /** Draws the last placement's anatomy and leaves its figures on the page for tests. */
+  function drawAnatomy() {
+    if (!anatomyOn() || !session) return;
+    const surface = session.result('placementCosts');
+    const graph = session.result('placementGraph');
+    if (surface) {
+      const f = drawCosts(ui.$('gc-cost'), ui.$('gc-probability'), surface);
+      ui.$('gc-cost-legend').dataset.chosenRank = String(f.chosenRank);
+      ui.$('gc-cost-legend').dataset.chosenProbability = String(f.chosenProbability);
+      ui.$('gc-cost-legend').dataset.offsets = String(f.offsets);
+    }
+    if (graph) {
+      const f = drawGraph(ui.$('gc-graph'), graph);
+      ui.$('gc-graph').dataset.cutPixels = String(f.cutPixels);
+      ui.$('gc-graph').onpointermove = (e) => {
+        const rect = e.currentTarget.getBoundingClientRect();
+        const x = Math.floor(((e.clientX - rect.left) / rect.width) * graph.width);
+        const y = Math.floor(((e.clientY - rect.top) / rect.height) * graph.height);
+        ui.$('gc-graph-readout').textContent = describePixel(graph, x, y);
+      };
+    }
+    document.body.dataset.anatomyPatches = String(lastEvent?.patchesPlaced ?? 0);
+  }
+
   return {
     id,
     title,
@@ -104,6 +144,7 @@ export function createPanel(ui) {
     sideHtml: SIDE_HTML,
     mount() {
       for (const id of ['gc-seams', 'gc-heat', 'gc-labels']) ui.$(id).addEventListener('change', redraw);
+      ui.$('gc-anatomy-on').addEventListener('change', toggleAnatomy);
     },
     async step() {
       pending ??= remoteSession('GraphcutTextures', [ui.exemplar(), options()], wanted);
@@ -116,6 +157,7 @@ export function createPanel(ui) {
         throw error;
       }
       if (pending !== current) return null; // reset while the session was being made
+      if (session !== created && anatomyOn()) await created.send('setAnatomy', true);
       session = created;
       if (session.done) return null;
       const event = await session.step();
@@ -126,6 +168,7 @@ export function createPanel(ui) {
       costs.push(event.totalSeamCost);
       draw();
       drawLinePlot(ui.$('gc-plot'), costs, { title: 'total seam cost per patch' });
+      drawAnatomy();
       const where = event.patch ? `offset (${event.patch.offsetX}, ${event.patch.offsetY})` : 'no unused offset left';
       ui.$('gc-readout').textContent =
         `${event.patchesPlaced} patches · ${where} · took ${event.pixelsTaken} px · cut ${event.cutCost.toFixed(2)} · ` +

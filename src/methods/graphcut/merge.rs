@@ -98,6 +98,8 @@ impl Merge {
             // The user placed every source: each is laid down whole.
             max_source_side: usize::MAX,
             windows: Vec::new(),
+            record_anatomy: false,
+            last_graph: None,
         };
         Ok(Merge {
             synthesis,

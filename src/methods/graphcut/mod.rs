@@ -3,6 +3,7 @@
 //! old seams remembered so later patches can overwrite them; offsets are chosen at random or by
 //! FFT-accelerated SSD matching.
 
+pub mod anatomy;
 pub mod blend;
 pub mod canvas;
 pub mod cost;

@@ -2,6 +2,7 @@
 //! shared one of `seam_graph.rs` over 4-connected pixels (video uses it over voxels); here, what
 //! a placement does with its cut, and the seam memory it keeps.
 
+use super::anatomy::GraphView;
 use super::canvas::{Patch, UNCOVERED};
 use super::seam_graph::{Footprint, SeamGraph, SeamGrid};
 use super::synthesis::Synthesis;
@@ -64,6 +65,17 @@ impl Synthesis {
             |i| local(i).is_some_and(|k| keep[k]),
         );
         let (cut_cost, taken) = graph.solve()?;
+        let view = self.record_anatomy.then(|| {
+            GraphView::new(
+                &graph,
+                (i64::from(patch.tx), i64::from(patch.ty)),
+                (pw, ph),
+                local,
+                |i, axis| self.next(i, axis),
+                &taken,
+            )
+        });
+        self.last_graph = view;
         let index = self.canvas.patches.len();
         self.canvas.patches.push(patch);
         self.used.insert(patch);

@@ -2,6 +2,7 @@
 //! reports it; the session ends after the output is covered and the refinement patches are
 //! placed, or when no unused offset is left.
 
+use super::anatomy::{CostSurface, GraphView};
 use super::canvas::Patch;
 use super::options::{Blend, Options};
 use super::placement::Region;
@@ -34,6 +35,8 @@ pub struct Session {
     finished: bool,
     last_region: Option<Region>,
     last: Option<Event>,
+    /// The cost surface of the last placement, while the anatomy is recorded.
+    last_costs: Option<CostSurface>,
 }
 
 impl Session {
@@ -44,6 +47,7 @@ impl Session {
             finished: false,
             last_region: None,
             last: None,
+            last_costs: None,
         })
     }
 
@@ -56,6 +60,7 @@ impl Session {
             finished: false,
             last_region: None,
             last: None,
+            last_costs: None,
         }
     }
 
@@ -72,6 +77,28 @@ impl Session {
     #[must_use]
     pub fn is_done(&self) -> bool {
         self.finished
+    }
+
+    /// Records (or stops recording) each placement's cost surface and graph for the page's
+    /// placement anatomy; off by default, since the graph view costs a few buffers per placement.
+    pub fn set_anatomy(&mut self, on: bool) {
+        self.synthesis.record_anatomy = on;
+        if !on {
+            self.last_costs = None;
+            self.synthesis.last_graph = None;
+        }
+    }
+
+    /// The cost surface of the last placement (recorded while the anatomy is on).
+    #[must_use]
+    pub fn placement_costs(&self) -> Option<&CostSurface> {
+        self.last_costs.as_ref()
+    }
+
+    /// The graph of the last placement (recorded while the anatomy is on).
+    #[must_use]
+    pub fn placement_graph(&self) -> Option<&GraphView> {
+        self.synthesis.last_graph.as_ref()
     }
 
     /// The error region of the last placement.
@@ -113,6 +140,20 @@ impl Session {
             patches_placed: s.canvas.patches.len(),
         };
         self.last_region = Some(region);
+        self.last_costs = if s.record_anatomy {
+            let temperature = f64::from(s.options.k) * f64::from(s.sigma).powi(2);
+            let wrap = s.canvas.wrap.then_some((s.canvas.width, s.canvas.height));
+            let anchor = (region.x as i64, region.y as i64);
+            CostSurface::new(
+                &scored,
+                chosen.map(|p| (p.tx, p.ty)),
+                temperature,
+                anchor,
+                wrap,
+            )
+        } else {
+            None
+        };
         let Some(patch) = chosen else {
             // No unused offset covers the region: nothing more can be done.
             self.finished = true;

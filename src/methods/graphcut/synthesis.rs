@@ -34,6 +34,9 @@ pub struct Synthesis {
     /// The window origin of every source for the current placement (drawn by
     /// [`Synthesis::draw_windows`]; (0, 0) for a source within the bound).
     pub windows: Vec<(u32, u32)>,
+    /// Whether placements keep their graph for the page's placement anatomy, and the last one.
+    pub record_anatomy: bool,
+    pub last_graph: Option<super::anatomy::GraphView>,
 }
 
 impl Synthesis {
@@ -65,6 +68,8 @@ impl Synthesis {
             seam_feature_weight: 0.0,
             max_source_side: MAX_SOURCE_SIDE,
             windows: Vec::new(),
+            record_anatomy: false,
+            last_graph: None,
         };
         synthesis.check_search_size()?;
         Ok(synthesis)

@@ -125,6 +125,8 @@ impl Synthesis {
             seam_feature_weight: self.seam_feature_weight,
             max_source_side: self.max_source_side,
             windows: self.windows.clone(),
+            record_anatomy: self.record_anatomy,
+            last_graph: self.last_graph.clone(),
         }
     }
 

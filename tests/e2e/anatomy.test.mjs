@@ -1,0 +1,56 @@
+// Placement anatomy (issue 16, point 2) in headless Chromium: with the view on, each graph-cut
+// placement shows its cost surface with the drawn offset among the cheapest, the probabilities
+// of eq. 3, and the seam graph with a minimum cut; the hover readout names a pixel's arcs.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { openDemo, RESULTS } from './harness.mjs';
+
+let demo;
+before(async () => {
+  demo = await openDemo();
+});
+after(async () => demo?.close());
+
+test('the placement anatomy shows the cost surface, the probabilities and the cut', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-panel="graphcut"]');
+  await page.click('button[data-sample="gravel_128"]');
+  await page.waitForSelector('body[data-exemplar="gravel 128×128"]');
+  await page.fill('#out-width', '256');
+  await page.fill('#out-height', '256');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.check('#gc-anatomy-on');
+  assert.equal(await page.isVisible('#gc-anatomy'), true);
+  const ranks = [];
+  for (let n = 1; n <= 6; n++) {
+    await page.click('#step');
+    await page.waitForSelector(`body[data-anatomy-patches="${n}"]`);
+    // The first patch is placed at random (nothing to match): its surface is flat.
+    if (n === 1) continue;
+    const legend = await page.$eval('#gc-cost-legend', (e) => ({ ...e.dataset }));
+    assert.ok(Number(legend.offsets) > 100, `${legend.offsets} candidate offsets`);
+    assert.ok(Number(legend.chosenProbability) > 0, 'the drawn offset had a chance');
+    ranks.push(Number(legend.chosenRank));
+    const cut = Number(await page.getAttribute('#gc-graph', 'data-cut-pixels'));
+    assert.ok(cut > 20, `a seam of ${cut} pixels is drawn`);
+  }
+  // With k = 0.01, eq. 3 draws from the cheapest few per cent of offsets: the marked offset lies
+  // in the surface's minimum region.
+  assert.ok(Math.max(...ranks) < 0.05, `ranks of the drawn offsets: ${ranks}`);
+  // The drawn offset's ring (cyan) is on the cost canvas.
+  const cyan = await page.$eval('#gc-cost', (c) => {
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] < 120 && d[i + 1] > 180 && d[i + 2] > 200) n++;
+    return n;
+  });
+  assert.ok(cyan > 10, `${cyan} marker pixels`);
+  const box = await page.$eval('#gc-graph', (c) => c.getBoundingClientRect().toJSON());
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  assert.match(await page.textContent('#gc-graph-readout'), /pixel \(\d+, \d+\): .*arc right/);
+  await page.screenshot({ path: `${RESULTS}/anatomy-graphcut.png`, fullPage: true });
+  // Off again: nothing more is recorded and the view hides.
+  await page.uncheck('#gc-anatomy-on');
+  assert.equal(await page.isVisible('#gc-anatomy'), false);
+  assert.deepEqual(errors, []);
+});
