@@ -2,7 +2,7 @@
 //! iteration and returns a plain event object; the current image and the teaching views render
 //! into the caller's buffers.
 
-use js_sys::{Array, Float64Array, Uint8ClampedArray, Uint32Array};
+use js_sys::{Array, Float32Array, Float64Array, Uint8ClampedArray, Uint32Array};
 use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
@@ -292,11 +292,22 @@ impl TextureOptimization {
             .collect()
     }
 
+    /// Step anatomy: with `true` every step ends after one half of an EM iteration, a part
+    /// event `{ kind: 'part', phase: 'first-match' | 'e-step' }` after a level's first M-step
+    /// and after each E-step, then the iteration's event after its M-step; `false` steps whole
+    /// iterations again. The output is the same either way.
+    #[wasm_bindgen(js_name = setHalfSteps)]
+    pub fn set_half_steps(&mut self, on: bool) {
+        self.session.set_half_steps(on);
+    }
+
     /// The neighbourhood grid X† of the level last iterated (on the step that finishes a level,
     /// still that level's; see `teaching::Field`): `{ columns, rows, neighbourhoodSize,
     /// levelWidth, levelHeight, exemplarWidth, exemplarHeight, matches }`, where `columns`/`rows`
     /// are the top-left corners in level pixels and `matches` holds the chosen exemplar corner
-    /// z_p of every node as x, y pairs (row by row). `null` before the first step.
+    /// z_p of every node as x, y pairs (row by row), with `distances` (||x_p - z_p|| per node
+    /// after the last M-step), `weights` (the next E-step's IRLS weights) and `r`. `null`
+    /// before the first step.
     pub fn field(&self) -> JsValue {
         let Some(Field {
             level,
@@ -311,7 +322,29 @@ impl TextureOptimization {
             Uint32Array::from(v.iter().map(|&x| x as u32).collect::<Vec<_>>().as_slice())
         };
         let pairs: Vec<u32> = matches.iter().flat_map(|m| [m.x, m.y]).collect();
+        // ||x_p - z_p|| per node after the last M-step, and the IRLS weight of the next E-step
+        // (eq. 5: ||x_p - z_p||^(r - 2)); both NaN before the first M-step of the level.
+        let r = self.session.options().r;
+        let solver = self.session.level_solver();
+        let squared = solver.map_or(&[][..], |s| s.distances());
+        let distances: Vec<f32> = squared
+            .iter()
+            .map(|&d| if d.is_finite() { d.sqrt() } else { f32::NAN })
+            .collect();
+        let weights: Vec<f32> = squared
+            .iter()
+            .map(|&d| {
+                if d.is_finite() {
+                    crate::methods::optimization::e_step::robust_weight(d, r)
+                } else {
+                    f32::NAN
+                }
+            })
+            .collect();
         object(&[
+            ("distances", Float32Array::from(distances.as_slice()).into()),
+            ("weights", Float32Array::from(weights.as_slice()).into()),
+            ("r", r.into()),
             ("columns", to_u32(columns).into()),
             ("rows", to_u32(rows).into()),
             ("neighbourhoodSize", (level.size as u32).into()),

@@ -54,3 +54,41 @@ test('the placement anatomy shows the cost surface, the probabilities and the cu
   assert.equal(await page.isVisible('#gc-anatomy'), false);
   assert.deepEqual(errors, []);
 });
+
+test('the step anatomy shows the E-step output and the M-step matches apart', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-panel="optimization"]');
+  await page.click('button[data-sample="gravel_64"]');
+  await page.waitForSelector('body[data-exemplar="gravel 64×64"]');
+  await page.fill('#out-width', '96');
+  await page.fill('#out-height', '96');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.check('#to-anatomy-on');
+  assert.equal(await page.isVisible('#to-anatomy'), true);
+  const halves = [];
+  let eImage = null;
+  let mImage = null;
+  for (let n = 1; n <= 5; n++) {
+    await page.click('#step');
+    await page.waitForSelector(`body[data-steps="${n}"]`);
+    const half = await page.getAttribute('body', 'data-half');
+    halves.push(half);
+    const pixels = await page.$eval('#output-canvas', (c) => Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data));
+    if (half === 'e-step') eImage = pixels;
+    else if (eImage && !mImage) mImage = pixels;
+  }
+  // A level's first M-step, then E-step and M-step in turn.
+  assert.deepEqual(halves.slice(0, 3), ['first-match', 'e-step', 'm-step'], halves.join(' '));
+  assert.ok(eImage && mImage, 'an E-step and the M-step after it were shown');
+  assert.equal(eImage.length, mImage.length);
+  let differing = 0;
+  for (let i = 0; i < eImage.length; i += 4) if (eImage[i] !== mImage[i] || eImage[i + 1] !== mImage[i + 1]) differing++;
+  assert.ok(differing > eImage.length / 4 / 10, `${differing} pixels differ between the E-step and M-step views`);
+  assert.match(await page.textContent('#to-anatomy-half'), /M-step|E-step/);
+  assert.ok(Number(await page.getAttribute('#to-weights', 'data-nodes')) > 10, 'the IRLS weights are drawn');
+  const box = await page.$eval('#output-canvas', (c) => c.getBoundingClientRect().toJSON());
+  await page.mouse.move(box.x + box.width / 3, box.y + box.height / 3);
+  assert.match(await page.textContent('#to-node-readout'), /node \(\d+, \d+\).*z_p at exemplar \(\d+, \d+\); .*IRLS weight/);
+  await page.screenshot({ path: `${RESULTS}/anatomy-optimization.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});

@@ -6,6 +6,9 @@ import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
 import { showQuality } from '../lib/quality.js';
 import { remoteSession } from '../lib/worker.js';
+import {
+  STEP_ANATOMY_HTML, describeNode, drawCollage, drawMatches, drawWeights, nodeAt, outlineNode,
+} from './optimization-anatomy.js';
 
 export const id = 'optimization';
 export const title = 'Texture optimization';
@@ -21,6 +24,7 @@ const OPTIONS_HTML = `
   <label title="EM iterations per level at most">iterations <input id="to-iterations" type="number" value="5" min="1" max="20" step="1"></label>
   <label><input id="to-tileable" type="checkbox"> tileable</label>
   <label><input id="to-teaching" class="view" type="checkbox"> teaching view</label>
+  <label title="stop after each half of an EM iteration: the E-step's output, then the M-step's matches"><input id="to-anatomy-on" class="view" type="checkbox"> step anatomy</label>
   <span class="views" title="soft constraints (section 4): paint colours on the output and the synthesis follows them">
     <label><input id="to-paint" class="view" type="checkbox"> paint constraints</label>
     <input id="to-colour" class="view" type="color" value="#c83c28" aria-label="paint colour">
@@ -32,7 +36,8 @@ const SIDE_HTML = `
   <div class="readout" id="to-readout">press Run or Step</div>
   <canvas id="to-energy" class="plot" width="296" height="170" aria-label="Energy plot"></canvas>
   <p class="legend" id="to-legend"></p>
-  <p class="quality" id="to-quality"></p>`;
+  <p class="quality" id="to-quality"></p>
+  ${STEP_ANATOMY_HTML}`;
 
 /** Creates the panel. `ui` gives the shared controls, canvas and exemplar. */
 export function createPanel(ui) {
@@ -60,7 +65,7 @@ export function createPanel(ui) {
 
   /** What every step brings back from the worker: the teaching view only while it is shown. */
   function wanted() {
-    const teaching = ui.$('to-teaching').checked;
+    const teaching = ui.$('to-teaching').checked || anatomyOn();
     return {
       views: teaching ? ['renderInto', 'renderOffsetMap'] : ['renderInto'],
       calls: teaching ? ['energyHistory', 'historyLevels', 'field'] : ['energyHistory', 'historyLevels'],
@@ -78,6 +83,7 @@ export function createPanel(ui) {
       try {
         created = await current;
         created.schedulePlan = await created.send('schedule');
+        if (anatomyOn()) await created.send('setHalfSteps', true);
       } catch (error) {
         if (pending === current) pending = null;
         throw error;
@@ -104,7 +110,14 @@ export function createPanel(ui) {
     if (!session) return;
     const canvas = ui.outputCanvas;
     const field = session.result('field');
-    if (ui.$('to-teaching').checked && field) {
+    if (anatomyOn() && field) {
+      // After the E-step: the output x. After an M-step: the z_p it chose, pasted in place.
+      if (lastHalf === 'e-step') drawInto(canvas, session);
+      else drawCollage(canvas, field, ui.$('exemplar-canvas'), session.width, session.height);
+      if (hoveredNode >= 0 && hoveredNode < field.columns.length * field.rows.length) {
+        outlineNode(canvas, field, hoveredNode);
+      }
+    } else if (ui.$('to-teaching').checked && field) {
       // The offset map, scaled up without smoothing so the grid can be drawn finer than a pixel.
       offsetImage = offsetImage?.width === session.width && offsetImage.height === session.height
         ? offsetImage : new ImageData(session.width, session.height);
@@ -123,6 +136,54 @@ export function createPanel(ui) {
     } else {
       drawInto(canvas, session);
     }
+  }
+
+  const anatomyOn = () => ui.$('to-anatomy-on').checked;
+  // The half the last step completed ('first-match', 'e-step' or 'm-step') and the hovered node.
+  let lastHalf = null;
+  let hoveredNode = -1;
+
+  const HALF_TEXT = {
+    'first-match': 'M-step on the new level (section 3): every grid node p finds the exemplar neighbourhood z_p ' +
+      'nearest to the up-sampled output. Shown: the chosen z_p pasted where their nodes are.',
+    'e-step': 'E-step (eq. 5): the output x becomes the IRLS-weighted average of the matched neighbourhoods z_p ' +
+      'over every pixel they cover. Shown: x. Press Step for the M-step.',
+    'm-step': 'M-step (section 3): with x fixed, each node p takes the exemplar neighbourhood z_p nearest to ' +
+      'x_p, its weight ||x_p − z_p||^(r−2) follows. Shown: the chosen z_p pasted in place; press Step for the E-step.',
+  };
+
+  /** The side views of the step anatomy: matches on the exemplar, weights, the hovered node. */
+  function drawAnatomy() {
+    const field = session?.result('field');
+    if (!anatomyOn() || !field) return;
+    ui.$('to-anatomy-half').textContent = HALF_TEXT[lastHalf] ?? '';
+    drawMatches(ui.$('to-matches'), field, ui.$('exemplar-canvas'), hoveredNode);
+    const w = drawWeights(ui.$('to-weights'), field);
+    ui.$('to-weights').dataset.nodes = String(w.nodes);
+    if (hoveredNode >= 0) ui.$('to-node-readout').textContent = describeNode(field, hoveredNode);
+  }
+
+  function hover(event) {
+    const field = session?.result('field');
+    if (!anatomyOn() || !field) return;
+    const rect = ui.outputCanvas.getBoundingClientRect();
+    const x = ((event.clientX - rect.left) / rect.width) * session.width;
+    const y = ((event.clientY - rect.top) / rect.height) * session.height;
+    const node = nodeAt(field, x, y, session.width, session.height);
+    if (node === hoveredNode) return;
+    hoveredNode = node;
+    draw();
+    drawAnatomy();
+  }
+
+  async function toggleAnatomy() {
+    ui.$('to-anatomy').hidden = !anatomyOn();
+    if (session) {
+      await session.send('setHalfSteps', anatomyOn());
+      if (anatomyOn() && !session.has('field')) await session.refresh({ views: ['renderInto'], calls: ['field'] });
+    }
+    draw();
+    drawAnatomy();
   }
 
   function paintLayer() {
@@ -202,12 +263,13 @@ export function createPanel(ui) {
     sideHtml: SIDE_HTML,
     mount() {
       ui.$('to-teaching').addEventListener('change', redraw);
+      ui.$('to-anatomy-on').addEventListener('change', toggleAnatomy);
       const canvas = ui.outputCanvas;
       canvas.onpointerdown = (e) => {
         painting = ui.$('to-paint').checked && !!session;
         paintAt(e);
       };
-      canvas.onpointermove = (e) => painting && paintAt(e);
+      canvas.onpointermove = (e) => (painting ? paintAt(e) : hover(e));
       this.onPointerUp = () => {
         if (!painting) return;
         painting = false;
@@ -234,8 +296,11 @@ export function createPanel(ui) {
       return current === session ? event : null; // reset while the step ran
     },
     onStep(event) {
+      lastHalf = event.kind === 'part' && event.phase !== 'm-step' ? event.phase : 'm-step';
       draw();
       plot();
+      drawAnatomy();
+      document.body.dataset.half = lastHalf;
       const constraint = paint ? ` · constraint error ${session.getter('constraintEnergy').toPrecision(3)}` : '';
       // Large outputs split an iteration over several steps (kind 'part'): say how far it is.
       const PHASES = { 'first-match': 'first M-step', 'e-step': 'E-step', 'm-step': 'M-step' };
@@ -263,6 +328,8 @@ export function createPanel(ui) {
       pending = null;
       session = null;
       paint = null;
+      lastHalf = null;
+      hoveredNode = -1;
       delete document.body.dataset.optimizationDone;
       document.body.dataset.iterations = '0';
       document.body.dataset.steps = '0';

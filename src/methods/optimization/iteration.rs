@@ -35,6 +35,9 @@ pub struct StepBudget {
     pub split: Option<f64>,
     /// Work between two looks at the clock (see [`CHUNK_WORK`]).
     pub chunk_work: usize,
+    /// Stop after each half of an iteration (the page's step anatomy): a level's first M-step,
+    /// the E-step (with its average and histogram matching) and the M-step each end a step.
+    pub halves: bool,
 }
 
 impl StepBudget {
@@ -45,6 +48,7 @@ impl StepBudget {
         StepBudget {
             split: milliseconds.map(|ms| ms.max(0.0)),
             chunk_work: chunk_work.max(1),
+            halves: false,
         }
     }
 
@@ -54,6 +58,7 @@ impl StepBudget {
         StepBudget {
             split: (pixels > SPLIT_PIXELS).then_some(STEP_MILLISECONDS),
             chunk_work: CHUNK_WORK,
+            halves: false,
         }
     }
 }
@@ -97,6 +102,9 @@ pub struct Work<'a> {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Iteration {
     pub stage: Stage,
+    /// The half of the iteration the last step completed, if it completed one (the first
+    /// M-step or the E-step; a completed M-step ends the iteration).
+    pub completed: Option<Phase>,
     /// Conjugate-gradient iterations of the last E-step's gradient-energy solve.
     pub solver_iterations: usize,
 }
@@ -105,6 +113,7 @@ impl Default for Iteration {
     fn default() -> Self {
         Iteration {
             stage: Stage::Start,
+            completed: None,
             solver_iterations: 0,
         }
     }
@@ -153,6 +162,7 @@ impl Iteration {
         };
         // Whether this step did any work yet (it always does some before it stops).
         let mut worked = false;
+        self.completed = None;
         loop {
             match self.stage {
                 Stage::Start => unreachable!("an iteration is begun before it advances"),
@@ -163,7 +173,13 @@ impl Iteration {
                         solver.resume_m_step(constraint, rng, &mut visits),
                     ) {
                         (_, None) => {}
-                        (Stage::FirstMatch, Some(_)) => self.stage = Stage::EStep,
+                        (Stage::FirstMatch, Some(_)) => {
+                            self.stage = Stage::EStep;
+                            if budget.halves {
+                                self.completed = Some(Phase::FirstMatch);
+                                return None;
+                            }
+                        }
                         (_, Some(changed)) => {
                             self.stage = Stage::Start;
                             return Some(changed);
@@ -193,6 +209,10 @@ impl Iteration {
                     if solver.resume_histogram(output, constraint, &mut pixels) {
                         solver.begin_m_step(output);
                         self.stage = Stage::MStep;
+                        if budget.halves {
+                            self.completed = Some(Phase::EStep);
+                            return None;
+                        }
                     }
                 }
             }

@@ -202,7 +202,14 @@ impl LevelSolver {
         self.matcher.space().vector_len()
     }
 
-    /// z_p per node, row by row.
+    /// The texture distance ||x_p - z_p||^2 of every node after the last M-step (infinite
+    /// before the first), row by row: the IRLS weights of the next E-step come from them.
+    #[must_use]
+    pub fn distances(&self) -> &[f32] {
+        &self.distances
+    }
+
+    /// z_p of every node, row by row.
     #[must_use]
     pub fn matches(&self) -> &[Pos] {
         &self.matches

@@ -192,7 +192,10 @@ impl Session {
     /// clock (see [`CHUNK_WORK`](super::iteration::CHUNK_WORK)). Where iterations split
     /// changes no output.
     pub fn set_step_budget(&mut self, milliseconds: Option<f64>, chunk_work: usize) {
-        self.budget = StepBudget::new(milliseconds, chunk_work);
+        self.budget = StepBudget {
+            halves: self.budget.halves,
+            ..StepBudget::new(milliseconds, chunk_work)
+        };
     }
 
     /// The estimated working set (see [`super::memory`]), with or without soft constraints.
@@ -266,6 +269,12 @@ impl Session {
         })
     }
 
+    /// The index of the level whose solver is current (the last one entered).
+    #[must_use]
+    pub fn solver_level(&self) -> Option<usize> {
+        self.entered
+    }
+
     /// The level's solver (grid, matches, search), once a level is entered.
     #[must_use]
     pub fn level_solver(&self) -> Option<&LevelSolver> {
@@ -280,6 +289,13 @@ impl Session {
             Some(out) => resize_bilinear(out, w, h, edge(self.options.tileable)),
             None => Image::new(w, h, self.exemplars[0].channels()),
         }
+    }
+
+    /// Makes every step end after one half of an EM iteration (the page's step anatomy: the
+    /// output after the E-step, then the matches after the M-step), or whole iterations again.
+    /// A part event then names the half it completed; no output changes.
+    pub fn set_half_steps(&mut self, on: bool) {
+        self.budget.halves = on;
     }
 
     /// Runs one EM iteration and reports it; on a large output, part of one (see
@@ -340,9 +356,14 @@ impl Session {
     fn part_event(&self) -> Event {
         let lv = self.levels[self.level];
         let solver = self.solver.as_ref().expect("level entered");
-        let (phase, progress) = self
-            .run
-            .progress(solver, lv.output_width * lv.output_height);
+        // A step that completed a half (step anatomy) reports that half, whole.
+        let (phase, progress) = match self.run.completed {
+            Some(Phase::FirstMatch) => (Phase::FirstMatch, 0.2),
+            Some(Phase::EStep) => (Phase::EStep, 0.4),
+            _ => self
+                .run
+                .progress(solver, lv.output_width * lv.output_height),
+        };
         let (energy, match_energy, total) = match self.last {
             Some(e) => (e.energy, e.match_energy, e.total_iterations),
             None => (f64::NAN, f64::NAN, 0),

@@ -24,8 +24,9 @@ pub struct Field<'a> {
 #[must_use]
 pub fn field(session: &Session) -> Option<Field<'_>> {
     let (columns, rows, matches) = session.matches()?;
-    // Every step records the level it iterated: the one whose solver holds these matches.
-    let level = session.schedule()[session.history().last()?.level];
+    // The level whose solver holds these matches (after the step that finishes a level, still
+    // that level until the next step enters the next one).
+    let level = session.schedule()[session.solver_level()?];
     Some(Field {
         level,
         columns,

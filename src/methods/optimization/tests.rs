@@ -520,3 +520,53 @@ fn splitting_iterations_over_steps_changes_no_output() {
         assert_eq!(s.output().unwrap(), &whole.0, "{search:?}");
     }
 }
+
+/// Half steps (the page's step anatomy) end a step after each half of an iteration: a level's
+/// first M-step, then per iteration the E-step (the output changes, the matches do not) and the
+/// M-step (the matches change, the output does not); the run ends with the same output.
+#[test]
+fn half_steps_stop_between_the_e_and_m_steps_and_change_no_output() {
+    let exemplar = sample("gravel_64");
+    let options = small(Search::PatchMatch);
+    let (whole, _) = run(&exemplar, options.clone());
+    let mut s = Session::new(&exemplar, options).unwrap();
+    s.set_half_steps(true);
+    let mut sequence = Vec::new();
+    let mut before: Option<(Image, Vec<crate::solvers::nn::Pos>)> = None;
+    loop {
+        let e = s.step().unwrap();
+        let now = (
+            s.output().unwrap().clone(),
+            s.matches().map(|m| m.2.to_vec()).unwrap_or_default(),
+        );
+        let label = match (e.kind, e.phase) {
+            (EventKind::Part, super::session::Phase::FirstMatch) => "first-m",
+            (EventKind::Part, super::session::Phase::EStep) => "e",
+            (EventKind::Part, _) => panic!("a half step stops only after a half: {e:?}"),
+            _ => "m",
+        };
+        if let Some((output, matches)) = &before
+            && e.level == sequence.last().map_or(usize::MAX, |(l, _)| *l)
+        {
+            match label {
+                "e" => assert_eq!(&now.1, matches, "the E-step changes no match"),
+                "m" => assert_eq!(&now.0, output, "the M-step changes no pixel"),
+                _ => {}
+            }
+        }
+        sequence.push((e.level, label));
+        before = Some(now);
+        if e.kind == EventKind::Done {
+            break;
+        }
+    }
+    let labels: Vec<&str> = sequence.iter().map(|(_, l)| *l).collect();
+    assert_eq!(&labels[..3], ["first-m", "e", "m"], "{labels:?}");
+    // Every E-step is followed by its M-step.
+    for pair in labels.windows(2) {
+        if pair[0] == "e" {
+            assert_eq!(pair[1], "m", "{labels:?}");
+        }
+    }
+    assert_eq!(s.output().unwrap(), whole.output().unwrap());
+}

@@ -1,0 +1,158 @@
+// The step anatomy of the texture-optimization panel (Kwatra et al. 2005, section 3): each EM
+// iteration split into its halves. After the E-step the output is x, the IRLS-weighted average of
+// the matched neighbourhoods (eq. 5); after the M-step it is shown as what the M-step chose: the
+// nearest exemplar neighbourhood z_p of every grid node, pasted where the node is. Beside it: the
+// z_p drawn on the exemplar in the colour of the node they serve, and the IRLS weights
+// ||x_p - z_p||^(r-2) as a heat map. The data is the session's field() (grid, matches,
+// distances, weights).
+
+export const STEP_ANATOMY_HTML = `
+  <section class="anatomy" id="to-anatomy" hidden aria-label="Step anatomy">
+    <p class="explain" id="to-anatomy-half"></p>
+    <h3>Chosen neighbourhoods z<sub>p</sub> on the exemplar</h3>
+    <canvas id="to-matches" class="anatomy-graph" width="296" height="296" aria-label="Matched exemplar neighbourhoods"></canvas>
+    <p class="legend">Each square is the z<sub>p</sub> of one grid node, in the colour of where that node sits on the
+      output (left to right: red to blue; top to bottom: dark to light). Hover the output to follow one node.</p>
+    <h3>IRLS weights <small>||x<sub>p</sub> − z<sub>p</sub>||<sup>r−2</sup>, eq. 5</small></h3>
+    <canvas id="to-weights" class="anatomy-graph" width="296" height="296" aria-label="IRLS weight of each node"></canvas>
+    <p class="legend">Bright: a node that matches well and pulls hard in the next E-step; dark: an outlier the robust
+      weights quiet down (r &lt; 2).</p>
+    <p class="readout" id="to-node-readout" aria-live="polite">hover the output for a node</p>
+  </section>`;
+
+/** Colour of the node in column i of `columns`, row j of `rows`: hue across, lightness down. */
+function nodeColour(i, columns, j, rows) {
+  const hue = Math.round((i / Math.max(1, columns - 1)) * 240);
+  const light = Math.round(35 + (j / Math.max(1, rows - 1)) * 35);
+  return `hsl(${hue} 85% ${light}%)`;
+}
+
+/** Heat ramp for weights: dark blue, purple, orange, pale yellow. */
+function heat(t) {
+  const stops = [[12, 14, 40], [80, 30, 110], [190, 60, 80], [245, 150, 50], [250, 240, 170]];
+  const x = Math.min(1, Math.max(0, t)) * (stops.length - 1);
+  const i = Math.min(stops.length - 2, Math.floor(x));
+  const f = x - i;
+  return stops[i].map((a, c) => Math.round(a + (stops[i + 1][c] - a) * f));
+}
+
+/**
+ * The M-step's picture: the z_p of every fourth node in each direction (their neighbourhoods,
+ * spaced w/4 apart, tile the level without overlap) copied from the exemplar canvas onto `canvas`
+ * at the output's size, with the neighbourhood grid outlined.
+ */
+export function drawCollage(canvas, field, exemplarCanvas, width, height) {
+  canvas.width = width;
+  canvas.height = height;
+  const ctx = canvas.getContext('2d');
+  ctx.imageSmoothingEnabled = false;
+  ctx.fillStyle = '#000';
+  ctx.fillRect(0, 0, width, height);
+  const w = field.neighbourhoodSize;
+  const ox = width / field.levelWidth;
+  const oy = height / field.levelHeight;
+  const ex = exemplarCanvas.width / field.exemplarWidth;
+  const ey = exemplarCanvas.height / field.exemplarHeight;
+  const cols = field.columns.length;
+  field.rows.forEach((y, j) => {
+    if (j % 4 && j !== field.rows.length - 1) return;
+    field.columns.forEach((x, i) => {
+      if (i % 4 && i !== cols - 1) return;
+      const n = j * cols + i;
+      const [mx, my] = [field.matches[2 * n], field.matches[2 * n + 1]];
+      ctx.drawImage(exemplarCanvas, mx * ex, my * ey, w * ex, w * ey, x * ox, y * oy, w * ox, w * oy);
+    });
+  });
+}
+
+/** The z_p of every node as a square on the exemplar, coloured by the node; `node` highlighted. */
+export function drawMatches(canvas, field, exemplarCanvas, node = -1) {
+  const zoom = Math.min(296 / exemplarCanvas.width, 296 / exemplarCanvas.height);
+  canvas.width = Math.round(exemplarCanvas.width * zoom);
+  canvas.height = Math.round(exemplarCanvas.height * zoom);
+  const ctx = canvas.getContext('2d');
+  ctx.globalAlpha = 0.55;
+  ctx.drawImage(exemplarCanvas, 0, 0, canvas.width, canvas.height);
+  ctx.globalAlpha = 1;
+  const sx = canvas.width / field.exemplarWidth;
+  const sy = canvas.height / field.exemplarHeight;
+  const w = field.neighbourhoodSize;
+  const cols = field.columns.length;
+  const rows = field.rows.length;
+  ctx.lineWidth = 1;
+  for (let n = 0; n < cols * rows; n++) {
+    const [mx, my] = [field.matches[2 * n], field.matches[2 * n + 1]];
+    ctx.strokeStyle = nodeColour(n % cols, cols, Math.floor(n / cols), rows);
+    // Centres as dots (all nodes), so that dense grids stay readable.
+    ctx.fillStyle = ctx.strokeStyle;
+    ctx.fillRect((mx + w / 2) * sx - 1.5, (my + w / 2) * sy - 1.5, 3, 3);
+  }
+  if (node >= 0) {
+    const [mx, my] = [field.matches[2 * node], field.matches[2 * node + 1]];
+    ctx.strokeStyle = '#ffffff';
+    ctx.lineWidth = 2;
+    ctx.strokeRect(mx * sx, my * sy, w * sx, w * sy);
+  }
+}
+
+/** The IRLS weight of every node as a heat map over the grid (grey before the first M-step). */
+export function drawWeights(canvas, field) {
+  const cols = field.columns.length;
+  const rows = field.rows.length;
+  const zoom = Math.max(1, Math.floor(Math.min(296 / cols, 296 / rows)));
+  canvas.width = cols * zoom;
+  canvas.height = rows * zoom;
+  const finite = Array.from(field.weights).filter(Number.isFinite).sort((a, b) => a - b);
+  const lo = finite[0] ?? 0;
+  const hi = finite[Math.floor(0.95 * (finite.length - 1))] ?? 1;
+  const image = new ImageData(cols, rows);
+  for (let n = 0; n < cols * rows; n++) {
+    const v = field.weights[n];
+    const c = Number.isFinite(v) ? heat((v - lo) / (hi - lo || 1)) : [70, 72, 80];
+    image.data.set([...c, 255], 4 * n);
+  }
+  const layer = document.createElement('canvas');
+  layer.width = cols;
+  layer.height = rows;
+  layer.getContext('2d').putImageData(image, 0, 0);
+  const ctx = canvas.getContext('2d');
+  ctx.imageSmoothingEnabled = false;
+  ctx.drawImage(layer, 0, 0, canvas.width, canvas.height);
+  return { lo, hi, nodes: finite.length };
+}
+
+/** The grid node whose neighbourhood centre is nearest output pixel (x, y) of an output
+ * `width` x `height`, as its index. */
+export function nodeAt(field, x, y, width, height) {
+  const lx = (x / width) * field.levelWidth;
+  const ly = (y / height) * field.levelHeight;
+  const half = field.neighbourhoodSize / 2;
+  const nearest = (list, v) => list.reduce((best, c, i) => (Math.abs(c + half - v) < Math.abs(list[best] + half - v) ? i : best), 0);
+  return nearest(field.rows, ly) * field.columns.length + nearest(field.columns, lx);
+}
+
+/** Outlines node `n`'s neighbourhood on the output canvas (drawn at the output's size). */
+export function outlineNode(canvas, field, n) {
+  const cols = field.columns.length;
+  const ox = canvas.width / field.levelWidth;
+  const oy = canvas.height / field.levelHeight;
+  const w = field.neighbourhoodSize;
+  const ctx = canvas.getContext('2d');
+  ctx.strokeStyle = '#ffffff';
+  ctx.lineWidth = 2;
+  ctx.strokeRect(field.columns[n % cols] * ox, field.rows[Math.floor(n / cols)] * oy, w * ox, w * oy);
+}
+
+/** What the readout says about node `n`. */
+export function describeNode(field, n) {
+  const cols = field.columns.length;
+  const [x, y] = [field.columns[n % cols], field.rows[Math.floor(n / cols)]];
+  const [mx, my] = [field.matches[2 * n], field.matches[2 * n + 1]];
+  const d = field.distances[n];
+  const weight = field.weights[n];
+  const figures = Number.isFinite(d)
+    ? `||x_p − z_p|| = ${d.toFixed(3)}, IRLS weight ${weight.toPrecision(3)} (r = ${Number(field.r.toFixed(3))})`
+    : 'no M-step on this level yet';
+  return `node (${x}, ${y}) of the level's grid, ${field.neighbourhoodSize}×${field.neighbourhoodSize}: ` +
+    `z_p at exemplar (${mx}, ${my}); ${figures}`;
+}
