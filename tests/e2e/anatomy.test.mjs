@@ -31,6 +31,7 @@ test('the placement anatomy shows the cost surface, the probabilities and the cu
     assert.ok(Number(legend.offsets) > 100, `${legend.offsets} candidate offsets`);
     assert.ok(Number(legend.chosenProbability) > 0, 'the drawn offset had a chance');
     ranks.push(Number(legend.chosenRank));
+    assert.match(await page.textContent('#gc-explain'), /Covering the output.*section 4/s);
     const cut = Number(await page.getAttribute('#gc-graph', 'data-cut-pixels'));
     assert.ok(cut > 20, `a seam of ${cut} pixels is drawn`);
   }
@@ -45,8 +46,7 @@ test('the placement anatomy shows the cost surface, the probabilities and the cu
     return n;
   });
   assert.ok(cyan > 10, `${cyan} marker pixels`);
-  const box = await page.$eval('#gc-graph', (c) => c.getBoundingClientRect().toJSON());
-  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.hover('#gc-graph');
   assert.match(await page.textContent('#gc-graph-readout'), /pixel \(\d+, \d+\): .*arc right/);
   await page.screenshot({ path: `${RESULTS}/anatomy-graphcut.png`, fullPage: true });
   // Off again: nothing more is recorded and the view hides.
@@ -84,10 +84,12 @@ test('the step anatomy shows the E-step output and the M-step matches apart', as
   let differing = 0;
   for (let i = 0; i < eImage.length; i += 4) if (eImage[i] !== mImage[i] || eImage[i + 1] !== mImage[i + 1]) differing++;
   assert.ok(differing > eImage.length / 4 / 10, `${differing} pixels differ between the E-step and M-step views`);
-  assert.match(await page.textContent('#to-anatomy-half'), /M-step|E-step/);
+  // The explanation follows the step: the last was an E-step or an M-step, and names the paper.
+  assert.match(await page.textContent('#to-explain'), /(M-step|E-step).*Read more/s);
+  await page.click('#to-explain summary');
+  assert.match(await page.textContent('#to-explain .cite'), /Kwatra.*2005.*section 3/);
   assert.ok(Number(await page.getAttribute('#to-weights', 'data-nodes')) > 10, 'the IRLS weights are drawn');
-  const box = await page.$eval('#output-canvas', (c) => c.getBoundingClientRect().toJSON());
-  await page.mouse.move(box.x + box.width / 3, box.y + box.height / 3);
+  await page.hover('#output-canvas', { position: { x: 60, y: 60 } });
   assert.match(await page.textContent('#to-node-readout'), /node \(\d+, \d+\).*z_p at exemplar \(\d+, \d+\); .*IRLS weight/);
   await page.screenshot({ path: `${RESULTS}/anatomy-optimization.png`, fullPage: true });
   assert.deepEqual(errors, []);

@@ -4,6 +4,7 @@
 import { drawInto, drawOverlay, strokeRect } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
 import { showQuality } from '../lib/quality.js';
+import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
 import { ANATOMY_HTML, describePixel, drawCosts, drawGraph } from './graphcut-anatomy.js';
 
@@ -34,6 +35,7 @@ const OPTIONS_HTML = `
 
 const SIDE_HTML = `
   <div class="readout" id="gc-readout">press Run or Step</div>
+  <div class="explain" id="gc-explain" data-history-text aria-live="polite"></div>
   <canvas id="gc-plot" class="plot" width="296" height="170" aria-label="Seam cost plot"></canvas>
   <p class="quality" id="gc-quality"></p>
   <p class="legend">Outline: the patch just placed (orange) and the error region it had to cover (dashed).</p>
@@ -164,6 +166,9 @@ export function createPanel(ui) {
       return pending === current ? event : null; // reset while the step ran
     },
     onStep(event) {
+      // A placement over a covered output is a surrounded region (section 3.2).
+      const refining = lastEvent?.covered ?? false;
+      explain(ui.$('gc-explain'), event.done ? 'gc-done' : refining ? 'gc-refine' : 'gc-cover');
       lastEvent = event;
       costs.push(event.totalSeamCost);
       draw();
@@ -189,6 +194,7 @@ export function createPanel(ui) {
       delete document.body.dataset.graphcutDone;
       document.body.dataset.patches = '0';
       ui.$('gc-readout').textContent = 'press Run or Step';
+      explain(ui.$('gc-explain'), 'gc-start');
       ui.$('gc-quality').textContent = '';
       drawLinePlot(ui.$('gc-plot'), [], { title: 'total seam cost per patch' });
       ui.outputCanvas.getContext('2d').clearRect(0, 0, ui.outputCanvas.width, ui.outputCanvas.height);

@@ -1,6 +1,6 @@
 // The step anatomy of the texture-optimization panel (Kwatra et al. 2005, section 3): each EM
 // iteration split into its halves. After the E-step the output is x, the IRLS-weighted average of
-// the matched neighbourhoods (eq. 5); after the M-step it is shown as what the M-step chose: the
+// the matched neighbourhoods (section 3.1); after the M-step it is shown as what the M-step chose: the
 // nearest exemplar neighbourhood z_p of every grid node, pasted where the node is. Beside it: the
 // z_p drawn on the exemplar in the colour of the node they serve, and the IRLS weights
 // ||x_p - z_p||^(r-2) as a heat map. The data is the session's field() (grid, matches,
@@ -8,12 +8,11 @@
 
 export const STEP_ANATOMY_HTML = `
   <section class="anatomy" id="to-anatomy" hidden aria-label="Step anatomy">
-    <p class="explain" id="to-anatomy-half"></p>
     <h3>Chosen neighbourhoods z<sub>p</sub> on the exemplar</h3>
     <canvas id="to-matches" class="anatomy-graph" width="296" height="296" aria-label="Matched exemplar neighbourhoods"></canvas>
     <p class="legend">Each square is the z<sub>p</sub> of one grid node, in the colour of where that node sits on the
       output (left to right: red to blue; top to bottom: dark to light). Hover the output to follow one node.</p>
-    <h3>IRLS weights <small>||x<sub>p</sub> − z<sub>p</sub>||<sup>r−2</sup>, eq. 5</small></h3>
+    <h3>IRLS weights <small>||x<sub>p</sub> − z<sub>p</sub>||<sup>r−2</sup>, section 3.1</small></h3>
     <canvas id="to-weights" class="anatomy-graph" width="296" height="296" aria-label="IRLS weight of each node"></canvas>
     <p class="legend">Bright: a node that matches well and pulls hard in the next E-step; dark: an outlier the robust
       weights quiet down (r &lt; 2).</p>

@@ -5,6 +5,7 @@
 import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
 import { showQuality } from '../lib/quality.js';
+import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
 import {
   STEP_ANATOMY_HTML, describeNode, drawCollage, drawMatches, drawWeights, nodeAt, outlineNode,
@@ -34,6 +35,7 @@ const OPTIONS_HTML = `
 
 const SIDE_HTML = `
   <div class="readout" id="to-readout">press Run or Step</div>
+  <div class="explain" id="to-explain" data-history-text aria-live="polite"></div>
   <canvas id="to-energy" class="plot" width="296" height="170" aria-label="Energy plot"></canvas>
   <p class="legend" id="to-legend"></p>
   <p class="quality" id="to-quality"></p>
@@ -143,20 +145,11 @@ export function createPanel(ui) {
   let lastHalf = null;
   let hoveredNode = -1;
 
-  const HALF_TEXT = {
-    'first-match': 'M-step on the new level (section 3): every grid node p finds the exemplar neighbourhood z_p ' +
-      'nearest to the up-sampled output. Shown: the chosen z_p pasted where their nodes are.',
-    'e-step': 'E-step (eq. 5): the output x becomes the IRLS-weighted average of the matched neighbourhoods z_p ' +
-      'over every pixel they cover. Shown: x. Press Step for the M-step.',
-    'm-step': 'M-step (section 3): with x fixed, each node p takes the exemplar neighbourhood z_p nearest to ' +
-      'x_p, its weight ||x_p − z_p||^(r−2) follows. Shown: the chosen z_p pasted in place; press Step for the E-step.',
-  };
 
   /** The side views of the step anatomy: matches on the exemplar, weights, the hovered node. */
   function drawAnatomy() {
     const field = session?.result('field');
     if (!anatomyOn() || !field) return;
-    ui.$('to-anatomy-half').textContent = HALF_TEXT[lastHalf] ?? '';
     drawMatches(ui.$('to-matches'), field, ui.$('exemplar-canvas'), hoveredNode);
     const w = drawWeights(ui.$('to-weights'), field);
     ui.$('to-weights').dataset.nodes = String(w.nodes);
@@ -301,6 +294,9 @@ export function createPanel(ui) {
       plot();
       drawAnatomy();
       document.body.dataset.half = lastHalf;
+      // What this step did, in the paper's terms: a level change, an E-step, an M-step.
+      const whole = event.kind === 'level' ? 'to-level' : event.kind === 'done' ? 'to-done' : 'to-m-step';
+      explain(ui.$('to-explain'), event.kind === 'part' ? `to-${event.phase}` : whole);
       const constraint = paint ? ` · constraint error ${session.getter('constraintEnergy').toPrecision(3)}` : '';
       // Large outputs split an iteration over several steps (kind 'part'): say how far it is.
       const PHASES = { 'first-match': 'first M-step', 'e-step': 'E-step', 'm-step': 'M-step' };
@@ -334,6 +330,7 @@ export function createPanel(ui) {
       document.body.dataset.iterations = '0';
       document.body.dataset.steps = '0';
       ui.$('to-readout').textContent = 'press Run or Step';
+      explain(ui.$('to-explain'), 'to-start');
       ui.$('to-quality').textContent = '';
       ui.$('to-legend').textContent = '';
       drawLinePlot(ui.$('to-energy'), [], { title: 'energy per iteration (Fig. 3)' });
