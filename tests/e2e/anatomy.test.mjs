@@ -94,3 +94,20 @@ test('the step anatomy shows the E-step output and the M-step matches apart', as
   await page.screenshot({ path: `${RESULTS}/anatomy-optimization.png`, fullPage: true });
   assert.deepEqual(errors, []);
 });
+
+test('every method panel explains what is on screen and cites its paper', async () => {
+  const { page, errors } = demo;
+  const panels = await page.$$eval('#methods button', (b) => b.map((x) => x.dataset.panel));
+  const cited = [];
+  for (const panel of panels) {
+    if (panel === 'compare') continue; // its cells carry each method's own name
+    await page.click(`button[data-panel="${panel}"]`);
+    const text = await page.$eval('#side .explain', (e) => e.textContent);
+    assert.ok(text.length > 60, `${panel}: "${text}"`);
+    const cite = await page.$eval('#side .explain .cite', (e) => e.textContent);
+    assert.match(cite, /(Kwatra|Shen|Wu & Yu).*(19|20)\d\d.*section/, panel);
+    cited.push(panel);
+  }
+  assert.ok(cited.length >= 7, cited.join(', '));
+  assert.deepEqual(errors, []);
+});

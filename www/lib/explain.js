@@ -6,6 +6,9 @@
 const KWATRA_2005 = 'Kwatra, Essa, Bobick & Kwatra, "Texture Optimization for Example-based Synthesis", SIGGRAPH 2005';
 const KWATRA_2003 = 'Kwatra, Schödl, Essa, Turk & Bobick, "Graphcut Textures", SIGGRAPH 2003';
 
+const SHEN_2009 = 'Shen, Jin, Mao & Feng, "A unified framework for designing textures using energy optimization", Pattern Recognition 2009 (Shen et al.)';
+const WU_YU_2004 = 'Wu & Yu, "Feature Matching and Deformation for Texture Synthesis", SIGGRAPH 2004';
+
 export const EXPLANATIONS = {
   'to-start': {
     text: 'Texture optimization treats synthesis as energy minimisation: the texture energy (1) sums, over a grid of overlapping neighbourhoods x_p of the output, the distance to the nearest exemplar neighbourhood z_p. Press Step to see one iteration.',
@@ -46,6 +49,54 @@ export const EXPLANATIONS = {
   'gc-done': {
     text: 'Done: covered and refined. Toggle seams, seam cost and labels to see where the cuts ran, and the quality line for how close the result is to the exemplar.',
     cite: [KWATRA_2003, 'section 6, Image Synthesis', 'the Image Synthesis section and Figure 5'],
+  },
+  'mg-start': {
+    text: 'Interactive merging: two images are laid down as patches and the graph cut finds the seam between them. Painted pixels become constraint arcs of infinite capacity to one image or the other, so the cut must route around them.',
+    cite: [KWATRA_2003, 'section 3 (constraint arcs, Figure 2) and section 6, Image Synthesis (interactive merging, Figure 6)', 'the paragraph "Consider the graph shown in Figure 2(right)..." on constraint arcs'],
+  },
+  'mg-done': {
+    text: 'Merged: the red seam is the minimum cut between the two images that respects the paint. Repaint and run again to move it.',
+    cite: [KWATRA_2003, 'section 6 and Figure 6', 'the caption of Figure 6 (the merged banner)'],
+  },
+  'fl-first': {
+    text: 'Frame 1 is ordinary texture optimization, coarse to fine. Every later frame starts from the previous one warped along the flow.',
+    cite: [KWATRA_2005, 'section 4.1, Flow-guided Synthesis', 'the paragraph "We perform synthesis in a frame-by-frame fashion..."'],
+  },
+  'fl-frame': {
+    text: 'A flow frame: the warped previous frame is both the start and a soft constraint, weighted by λ in the flow energy (3); the texture energy keeps it looking like the exemplar. The naive view beside it only warps, and smears.',
+    cite: [KWATRA_2005, 'section 4.1, equation (3), and section 4 (soft constraints, equation (2))', 'the paragraph "We perform synthesis in a frame-by-frame fashion..."'],
+  },
+  'fg-features': {
+    text: 'Feature-guided synthesis: each new patch is chosen by its feature cost (curvilinear features matched in position and orientation, section 2.1) plus 0.5 × its colour difference, bent by a thin-plate spline so its features meet those placed (section 2.2), then cut in with a graph-cut seam.',
+    cite: [WU_YU_2004, 'sections 2.1-2.3 and 3', 'the section "3 Feature-Guided Texture Synthesis"'],
+  },
+  'fg-graphcut': {
+    text: 'The same exemplar and seed through plain graph cut, for comparison: count where features end at a seam (broken features, lower is better).',
+    cite: [KWATRA_2003, 'section 4, entire patch matching', 'the paragraph on entire patch matching'],
+  },
+  'vt-start': {
+    text: 'Video textures: the graph is over voxels (x, y, t) and a patch is a spatio-temporal block of the clip; a loop needs only a seam in time, found by the same minimum cut.',
+    cite: [KWATRA_2003, 'section 7, Video Synthesis', 'the section "7 Video Synthesis"'],
+  },
+  'ds-deform': {
+    text: 'Global deformation: the texture is rotated, scaled, mirrored or flipped as a whole, then re-synthesised by energy optimization so that it stays seamless.',
+    cite: [SHEN_2009, 'section 3.1, Algorithm overview', 'the paragraph "Our interactive scheme allows the texture designer..."'],
+  },
+  'ds-brush': {
+    text: 'Local deformation with a brush: a graph-cut labelling decides which pixels take the brushed texture, and Poisson blending removes the seam.',
+    cite: [SHEN_2009, 'section 3.2, Interactive local-texture deformation using energy optimization', 'the section 3.2'],
+  },
+  'ds-synthesis': {
+    text: 'Texture optimization with a wavelet texture energy: neighbourhoods are compared by their wavelet coefficients as well as their pixels, which keeps the detail the plain energy averages away.',
+    cite: [SHEN_2009, 'section 3.3, Wavelet-based texture design using energy optimization', 'the section 3.3'],
+  },
+  'ds-layers': {
+    text: 'Layer-based design: textures are laid down as layers whose patches are placed by energy, fast enough to paint with.',
+    cite: [SHEN_2009, 'section 3.4, Fast layer-based texture design', 'the section 3.4'],
+  },
+  'ds-tileable': {
+    text: 'Tileable (cyclic) textures: the borders are re-synthesised so that the texture continues across them when tiled.',
+    cite: [SHEN_2009, 'section 4, Designing cyclic textures using energy optimization', 'the section 4'],
   },
 };
 

@@ -1,6 +1,7 @@
 // The "Texture design" panel (Shen et al. 2009): a designer makes a family of textures from one
 // sample, stage by stage. Each stage is a module in ./design/; they share a gallery of designed
 // textures (the set S of the paper), from which the base and the reference are picked.
+import { explain } from '../lib/explain.js';
 import { setupTablist } from '../lib/tablist.js';
 import { Gallery } from './design/gallery.js';
 import * as deformStage from './design/deform.js';
@@ -25,6 +26,7 @@ export function createPanel(ui) {
     stage = module.createStage(context);
     ui.$('ds-stage-options').innerHTML = stage.optionsHtml;
     ui.$('ds-stage-side').innerHTML = stage.sideHtml ?? '';
+    explain(ui.$('ds-explain'), `ds-${module.id}`);
     for (const button of ui.$('ds-stages').children) {
       button.setAttribute('aria-selected', String(button.dataset.stage === module.id));
     }
@@ -42,6 +44,7 @@ export function createPanel(ui) {
       </nav>
       <div class="method-options" id="ds-stage-options" role="tabpanel" aria-label="Stage options"></div>`,
     sideHtml: `<div class="readout" id="ds-readout"></div>
+      <div class="explain" id="ds-explain" data-history-text aria-live="polite"></div>
       <div id="ds-stage-side"></div>
       <h3 class="side-title">Designed textures <small>(B: base, R: reference)</small></h3>
       <div class="gallery" id="ds-gallery" role="list" aria-label="Designed textures"></div>`,

@@ -7,6 +7,7 @@
 import { detectFeatures, measureBrokenFeatures } from '../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../lib/canvas.js';
 import { showQuality } from '../lib/quality.js';
+import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
 
 export const id = 'features';
@@ -28,6 +29,7 @@ const OPTIONS_HTML = `
 
 const SIDE_HTML = `
   <div class="readout" id="fg-readout">press Run or Step</div>
+  <div class="explain" id="fg-explain" data-history-text aria-live="polite"></div>
   <div class="side-row">
     <figure><canvas id="fg-exemplar" class="paintable" aria-label="Exemplar feature map"></canvas><figcaption id="fg-exemplar-caption">exemplar features</figcaption></figure>
     <figure><canvas id="fg-map" aria-label="Synthesised feature map"></canvas><figcaption>synthesised feature map</figcaption></figure>
@@ -220,6 +222,7 @@ export function createPanel(ui) {
       return { ...event, phase: 'graphcut' };
     },
     onStep(event) {
+      explain(ui.$('fg-explain'), event.phase === 'features' ? 'fg-features' : 'fg-graphcut');
       if (event.phase === 'features') {
         zoomCanvas();
         drawPlacement();
@@ -258,6 +261,7 @@ export function createPanel(ui) {
       }
       const readout = ui.$('fg-readout');
       if (readout) readout.textContent = 'press Run or Step';
+      explain(ui.$('fg-explain'), 'fg-features');
       if (ui.$('fg-quality')) ui.$('fg-quality').textContent = '';
     },
   };

@@ -6,6 +6,7 @@
 import { flowField } from '../pkg/texsynth.js';
 import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
+import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
 import { recordToLink } from '../lib/record.js';
 
@@ -40,6 +41,7 @@ const OPTIONS_HTML = `
 
 const SIDE_HTML = `
   <div class="readout" id="fl-readout">press Run or Step (frames of 128×128 run live; 256×256 at a few per second)</div>
+  <div class="explain" id="fl-explain" data-history-text aria-live="polite"></div>
   <div class="side-row">
     <figure><canvas id="fl-playback" width="128" height="128" aria-label="Finished frames, playing"></canvas>
       <figcaption>finished frames, looping</figcaption></figure>
@@ -207,6 +209,7 @@ export function createPanel(ui) {
         : `frame ${event.frame + 1}/${session.getter('frames')} · neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration}${part}`;
       ui.$('fl-readout').textContent =
         `${what} · texture energy ${event.textureEnergy.toPrecision(3)} · flow energy ${event.flowEnergy.toPrecision(3)}`;
+      explain(ui.$('fl-explain'), event.frame === 0 ? 'fl-first' : 'fl-frame');
       if (event.done) document.body.dataset.flowDone = 'true';
     },
     reset() {
@@ -219,6 +222,7 @@ export function createPanel(ui) {
       delete document.body.dataset.recordedBytes;
       document.body.dataset.flowFrames = '0';
       ui.$('fl-readout').textContent = 'press Run or Step (frames of 128×128 run live; 256×256 at a few per second)';
+      explain(ui.$('fl-explain'), 'fl-first');
       ui.$('fl-download').hidden = true;
       for (const id of ['fl-playback', 'fl-naive']) {
         const c = ui.$(id);

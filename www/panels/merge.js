@@ -4,6 +4,7 @@
 import { Exemplar } from '../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../lib/canvas.js';
 import { SAMPLES } from '../lib/samples.js';
+import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
 
 export const id = 'merge';
@@ -127,6 +128,7 @@ export function createPanel(ui) {
       return optionsHtml();
     },
     sideHtml: `<div class="readout" id="mg-readout">paint on the image, then Run or Step</div>
+      <div class="explain" id="mg-explain" data-history-text aria-live="polite"></div>
       <p class="legend">Blue paint: must come from the first image (the exemplar). Orange: from the second.
       Red lines: the seam the graph cut chose.</p>`,
     mount() {
@@ -154,6 +156,7 @@ export function createPanel(ui) {
       ui.$('mg-readout').textContent = event.done
         ? `merged · cut cost ${event.cutCost.toFixed(2)}`
         : `source ${event.source + 1} laid down`;
+      explain(ui.$('mg-explain'), event.done ? 'mg-done' : 'mg-start');
       if (event.done) document.body.dataset.mergeDone = 'true';
     },
     reset() {
@@ -165,6 +168,7 @@ export function createPanel(ui) {
       }
       const readout = ui.$('mg-readout');
       if (readout) readout.textContent = 'paint on the image, then Run or Step';
+      explain(ui.$('mg-explain'), 'mg-start');
     },
   };
 }

@@ -7,6 +7,7 @@
 // can be recorded as WebM.
 import { clipFromImages, clipFromStrip, clipFromVideo, loadImage } from '../lib/video-input.js';
 import { recordToLink } from '../lib/record.js';
+import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
 
 export const id = 'video';
@@ -40,6 +41,7 @@ const OPTIONS_HTML = `
 
 const SIDE_HTML = `
   <div class="readout" id="vt-readout">press Run or Step</div>
+  <div class="explain" id="vt-explain" data-history-text aria-live="polite"></div>
   <div class="side-row">
     <figure><canvas id="vt-playback" width="128" height="128" style="width: 128px; image-rendering: pixelated" aria-label="Output, playing"></canvas>
       <figcaption id="vt-playback-caption">output, looping</figcaption></figure>
@@ -292,6 +294,7 @@ export function createPanel(ui) {
       delete document.body.dataset.recordedBytes;
       document.body.dataset.videoPatches = '0';
       ui.$('vt-readout').textContent = 'press Run or Step';
+      explain(ui.$('vt-explain'), 'vt-start');
       ui.$('vt-download').hidden = true;
       for (const id of ['vt-playback', 'vt-slice', 'vt-loop-last', 'vt-loop-first']) {
         const c = ui.$(id);
