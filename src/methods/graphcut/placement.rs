@@ -8,7 +8,7 @@ use super::source::Source;
 use super::source_window::{MAX_SOURCE_SIDE, search_key, window_extent};
 use super::synthesis::Synthesis;
 use crate::core::{Error, Image, Result};
-use crate::solvers::fft_ssd::{Boundary, MAX_TRANSFORM_VALUES, transform_size};
+use crate::solvers::fft_ssd::{Boundary, MAX_TRANSFORM_VALUES, OffsetRange, transform_size};
 
 /// A rectangle of the output (it may run past the right or bottom border when wrapping).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -198,14 +198,40 @@ impl Synthesis {
             // Keyed by source and window: a source within the bound is transformed once per
             // synthesis, not per placement (the window's size depends on the patch and the region
             // only, so it never changes); a larger one each time its window moves.
-            let map = self.ssd.search_keyed(
-                &pixels,
-                Some(&weights),
-                &patch_image,
-                None,
-                window.boundary,
-                Some(search_key(s, (wx, wy))),
-            )?;
+            let key = Some(search_key(s, (wx, wy)));
+            let map = match window.boundary {
+                // The map is needed only at the candidates' offsets: a transform the size of
+                // their span plus the patch (about 180 a side for a 128 patch while covering,
+                // instead of 300), not the window plus the patch.
+                Boundary::Open => {
+                    let offsets: Vec<(isize, isize)> = of_source
+                        .iter()
+                        .map(|&p| window.offset(p, (w, h)))
+                        .collect();
+                    let min = |f: fn(&(isize, isize)) -> isize| offsets.iter().map(f).min();
+                    let max = |f: fn(&(isize, isize)) -> isize| offsets.iter().map(f).max();
+                    let (x0, x1) = (min(|o| o.0).unwrap_or(0), max(|o| o.0).unwrap_or(0));
+                    let (y0, y1) = (min(|o| o.1).unwrap_or(0), max(|o| o.1).unwrap_or(0));
+                    let range = OffsetRange {
+                        first: (x0, y0),
+                        count: ((x1 - x0 + 1) as usize, (y1 - y0 + 1) as usize),
+                    };
+                    self.ssd.search_range(
+                        (&pixels, Some(&weights)),
+                        (&patch_image, None),
+                        range,
+                        key,
+                    )?
+                }
+                Boundary::Periodic => self.ssd.search_keyed(
+                    &pixels,
+                    Some(&weights),
+                    &patch_image,
+                    None,
+                    window.boundary,
+                    key,
+                )?,
+            };
             for patch in of_source {
                 let (ox, oy) = window.offset(patch, (w, h));
                 let (cost, area) = map.get(ox, oy).unwrap_or((0.0, 0.0));

@@ -50,6 +50,14 @@ pub enum Boundary {
     Periodic,
 }
 
+/// The translations a [`SsdSearch::search_range`] computes: `count` of them from `first`, along x
+/// and y.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct OffsetRange {
+    pub first: (isize, isize),
+    pub count: (usize, usize),
+}
+
 /// Overlaps whose total weight is below this count as no overlap: the transform leaves noise of
 /// about `1e-12` where the true area is zero, and `C / A` there would be meaningless.
 pub const MIN_AREA: f32 = 1e-6;
@@ -228,6 +236,69 @@ impl SsdSearch {
         boundary: Boundary,
         patch_key: Option<u64>,
     ) -> Result<SsdMap> {
+        let (ow, oh) = (output.width(), output.height());
+        let (pw, ph) = (patch.width(), patch.height());
+        let (nx, ny) = transform_size((ow, oh), (pw, ph), boundary);
+        let (map_width, map_height, first_offset) = match boundary {
+            Boundary::Open => (ow + pw - 1, oh + ph - 1, (1 - pw as isize, 1 - ph as isize)),
+            Boundary::Periodic => (ow, oh, (0, 0)),
+        };
+        let map = (map_width, map_height, first_offset);
+        self.correlate(
+            (output, output_weights),
+            (patch, patch_weights),
+            (nx, ny),
+            map,
+            patch_key,
+        )
+    }
+
+    /// Like [`SsdSearch::search_keyed`] with [`Boundary::Open`], for the translations of `range`
+    /// only: `first` and `count` along x and y (any of them, inside the output or not). The
+    /// transform needs to be only as large as the offsets and the patch span together, not the
+    /// output plus the patch: a graph-cut placement, whose candidates lie in a window of `2 pw -
+    /// region` around the error region, transforms about 180 values a side instead of 300.
+    ///
+    /// A circular correlation of length `n` is the linear one at offset `t` when no patch pixel
+    /// `u` wraps onto the output's data: `t + u` below 0 must land at `n + t + u >= ow`, and
+    /// above `n - 1` cannot happen, so `n >= ow - t_min` and `n >= t_max + pw` (and `n >= ow` to
+    /// hold the data).
+    pub fn search_range(
+        &mut self,
+        output: (&Image, Option<&[f32]>),
+        patch: (&Image, Option<&[f32]>),
+        range: OffsetRange,
+        patch_key: Option<u64>,
+    ) -> Result<SsdMap> {
+        let (ow, oh) = (output.0.width(), output.0.height());
+        let (pw, ph) = (patch.0.width(), patch.0.height());
+        let (cx, cy) = range.count;
+        if cx == 0 || cy == 0 {
+            return Err(Error::InvalidParameter {
+                name: "offset range",
+                reason: format!("is empty ({cx}x{cy} offsets)"),
+            });
+        }
+        let need = |len: usize, first: isize, count: usize, patch: usize| -> usize {
+            let last = first + count as isize - 1;
+            let below = (len as isize - first.min(0)).max(len as isize);
+            below.max(last + patch as isize).max(1) as usize
+        };
+        let nx = 2 * smooth_size(need(ow, range.first.0, cx, pw).div_ceil(2));
+        let ny = smooth_size(need(oh, range.first.1, cy, ph));
+        self.correlate(output, patch, (nx, ny), (cx, cy, range.first), patch_key)
+    }
+
+    /// The search proper: `nx` x `ny` transforms, read out as a `map_width` x `map_height` map of
+    /// translations from `first_offset`.
+    fn correlate(
+        &mut self,
+        (output, output_weights): (&Image, Option<&[f32]>),
+        (patch, patch_weights): (&Image, Option<&[f32]>),
+        (nx, ny): (usize, usize),
+        (map_width, map_height, first_offset): (usize, usize, (isize, isize)),
+        patch_key: Option<u64>,
+    ) -> Result<SsdMap> {
         if patch.channels() != output.channels() {
             return Err(Error::InvalidParameter {
                 name: "patch",
@@ -240,13 +311,6 @@ impl SsdSearch {
         }
         let output = Weighted::new(output, output_weights, ("output", "output weights"))?;
         let patch = Weighted::new(patch, patch_weights, ("patch", "patch weights"))?;
-        let (ow, oh) = (output.image.width(), output.image.height());
-        let (pw, ph) = (patch.image.width(), patch.image.height());
-        let (nx, ny) = transform_size((ow, oh), (pw, ph), boundary);
-        let (map_width, map_height, first_offset) = match boundary {
-            Boundary::Open => (ow + pw - 1, oh + ph - 1, (1 - pw as isize, 1 - ph as isize)),
-            Boundary::Periodic => (ow, oh, (0, 0)),
-        };
         if nx.saturating_mul(ny) > MAX_TRANSFORM_VALUES {
             return Err(Error::InvalidSize {
                 what: "FFT search transform",

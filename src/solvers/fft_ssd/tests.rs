@@ -329,3 +329,71 @@ fn fft_ssd_timing() {
         }
     }
 }
+
+/// A search over a range of offsets gives, at each of them, what the direct SSD gives: ranges
+/// inside the usual open range, reaching past it on any side, and of one offset, on random
+/// sizes, channels and weights (the transform is then smaller than the output plus the patch).
+#[test]
+fn a_range_search_matches_direct_ssd_on_its_offsets() {
+    let mut rng = Rng::new(21);
+    let mut search = SsdSearch::new();
+    let mut smaller = 0;
+    for round in 0..150 {
+        let channels = 1 + rng.index(3);
+        let (ow, oh) = (1 + rng.index(14), 1 + rng.index(14));
+        let (pw, ph) = (1 + rng.index(14), 1 + rng.index(14));
+        let output = random_image(&mut rng, ow, oh, channels);
+        let patch = random_image(&mut rng, pw, ph, channels);
+        let kinds = (rng.below(3), rng.below(3));
+        let output_weights = random_weights(&mut rng, ow * oh, kinds.0);
+        let patch_weights = random_weights(&mut rng, pw * ph, kinds.1);
+        let (ow_ref, pw_ref) = (output_weights.as_deref(), patch_weights.as_deref());
+        // Any start from 3 before the usual first offset to 3 past the output, any count.
+        let start = |p: usize, o: usize, rng: &mut Rng| -> isize {
+            rng.index(p + o + 6) as isize - p as isize - 2
+        };
+        let first = (start(pw, ow, &mut rng), start(ph, oh, &mut rng));
+        let count = (1 + rng.index(ow + pw), 1 + rng.index(oh + ph));
+        let range = OffsetRange { first, count };
+        let map = search
+            .search_range((&output, ow_ref), (&patch, pw_ref), range, None)
+            .unwrap();
+        assert_eq!(
+            (map.width(), map.height(), map.first_offset()),
+            (count.0, count.1, first)
+        );
+        let (costs, areas) = direct_ssd(&output, ow_ref, &patch, pw_ref, Boundary::Open);
+        let full_width = (ow + pw - 1) as isize;
+        for index in 0..count.0 * count.1 {
+            let (tx, ty) = map.offset(index);
+            let (i, j) = (tx + pw as isize - 1, ty + ph as isize - 1);
+            let inside = (0..full_width).contains(&i) && (0..(oh + ph - 1) as isize).contains(&j);
+            let (cost, area) = if inside {
+                let k = (j * full_width + i) as usize;
+                (costs[k], areas[k])
+            } else {
+                (0.0, 0.0) // no overlap at all
+            };
+            let (got_cost, got_area) =
+                (f64::from(map.costs()[index]), f64::from(map.areas()[index]));
+            let context = format!(
+                "round {round}, {ow}x{oh} output, {pw}x{ph} patch, {range:?}, offset ({tx}, {ty})"
+            );
+            assert!(
+                (got_area - area).abs() <= 1e-5 * (1.0 + area),
+                "area {got_area} vs {area}: {context}"
+            );
+            assert!(
+                (got_cost - cost).abs() <= 1e-5 * (1.0 + cost),
+                "cost {got_cost} vs {cost}: {context}"
+            );
+        }
+        let full = transform_size((ow, oh), (pw, ph), Boundary::Open);
+        let used = search.transform.as_ref().map(|t| (t.nx, t.ny)).unwrap();
+        smaller += usize::from(used.0 * used.1 < full.0 * full.1);
+    }
+    assert!(
+        smaller > 20,
+        "the range made the transform smaller in {smaller} of 150 rounds"
+    );
+}
