@@ -158,6 +158,12 @@ export interface NeighbourhoodField {
   levelWidth: number; levelHeight: number; exemplarWidth: number; exemplarHeight: number;
   /** x, y pairs, row by row. */
   matches: number[] | Uint32Array | Int32Array;
+  /** ||x_p - z_p|| per node after the last M-step (NaN before the level's first). */
+  distances: Float32Array;
+  /** The next E-step's IRLS weight ||x_p - z_p||^(r-2) per node (NaN before the first M-step). */
+  weights: Float32Array;
+  /** The robust exponent r. */
+  r: number;
 }
 
 /** A texture-optimisation run (Kwatra et al. 2005) you advance with `step()`. */
@@ -184,6 +190,12 @@ export class TextureOptimization implements Steppable<TextureOptimizationEvent> 
   schedule(): ScheduleLevel[];
   /** The neighbourhood grid of the level last iterated; null before the first step. */
   field(): NeighbourhoodField | null;
+  /**
+   * Step anatomy: with `true` every step ends after one half of an EM iteration (a part event
+   * with phase 'first-match' or 'e-step', then the iteration's event after its M-step); the
+   * output is the same either way.
+   */
+  setHalfSteps(on: boolean): void;
   /**
    * Soft constraints (section 4): RGBA desired colours at output size whose alpha is the mask;
    * `lambda` (0 to 1e6) relative to the texture (1 = half way).
@@ -276,9 +288,41 @@ export class GraphcutTextures implements Steppable<GraphcutTexturesEvent> {
   errorRegion(): Rect | null;
   /** Names of the sources patches come from ("exemplar", "rotate 90", "scale 0.5", ...). */
   sources(): string[];
+  /** Records each placement's cost surface and graph (for `placementCosts`, `placementGraph`). */
+  setAnatomy(on: boolean): void;
+  /** The last placement's cost surface C(t) and eq. 3's probabilities; null unless recorded. */
+  placementCosts(): PlacementCosts | null;
+  /** The last placement's seam graph per pixel of the patch; null unless recorded. */
+  placementGraph(): PlacementGraph | null;
   readonly done: boolean;
   readonly width: number;
   readonly height: number;
+}
+
+/** C(t) over the candidate offsets of one placement (offset of cell (i, j): (x + i, y + j)). */
+export interface PlacementCosts {
+  x: number; y: number; width: number; height: number;
+  /** Area-normalised SSD (eq. 2 / 4); Infinity where no unused candidate is. */
+  cost: Float32Array;
+  /** exp(-C / (k sigma^2)) normalised to sum 1 (eq. 3). */
+  probability: Float32Array;
+  /** Grid cell of the offset drawn (-1 when none). */
+  chosenX: number; chosenY: number;
+  /** k sigma^2. */
+  temperature: number;
+}
+
+/** The seam graph of one placement per pixel of the patch's box (origin x, y). */
+export interface PlacementGraph {
+  x: number; y: number; width: number; height: number;
+  /** 0 outside, 1 uncovered (takes the patch, no node), 2 free node, 3 held to the old output, 4 held to the patch. */
+  kind: Uint8Array;
+  /** Arc capacity to the right / lower neighbour (NaN: no arc). */
+  right: Float32Array; down: Float32Array;
+  /** Old seam cost there (NaN: none). */
+  oldRight: Float32Array; oldDown: Float32Array;
+  /** 1 where the pixel took the new patch. */
+  taken: Uint8Array;
 }
 
 /** What one `GraphcutMerge.step()` did. */
