@@ -472,7 +472,7 @@ impl SearchWindow {
 #[must_use]
 pub fn box_sums(values: &[f32], w: usize, h: usize, side: usize, wrap: bool) -> Vec<f32> {
     let rows = sliding_sums(values, w, h, side, wrap, true);
-    sliding_sums(&rows, w, h, side, wrap, false)
+    sliding_column_sums(&rows, w, h, side, wrap)
 }
 
 /// Window sums of length `side` along rows (`along_rows`) or columns, in f64 so that the running
@@ -512,6 +512,42 @@ fn sliding_sums(
     out
 }
 
+/// [`sliding_sums`] down the columns, all columns at once row by row (a column at a time strides
+/// through memory a row apart: 11% of a 1024x1024 synthesis went there). Each column sees the
+/// same additions in the same order, so the sums are the same to the bit.
+fn sliding_column_sums(values: &[f32], w: usize, h: usize, side: usize, wrap: bool) -> Vec<f32> {
+    let mut out = vec![f32::NEG_INFINITY; w * h];
+    // Columns whose windows already cross the right border stay -inf.
+    let live: Vec<bool> = values[..w]
+        .iter()
+        .map(|&v| v != f32::NEG_INFINITY)
+        .collect();
+    let mut sums = vec![0.0f64; w];
+    for k in 0..side {
+        let row = &values[(k % h) * w..][..w];
+        for ((sum, &v), &on) in sums.iter_mut().zip(row).zip(&live) {
+            if on {
+                *sum += f64::from(v);
+            }
+        }
+    }
+    for start in 0..h {
+        let (entering, leaving) = (((start + side) % h) * w, start * w);
+        let out_row = &mut out[start * w..][..w];
+        let write = wrap || start + side <= h;
+        for x in 0..w {
+            if !live[x] {
+                continue;
+            }
+            if write {
+                out_row[x] = sums[x] as f32;
+            }
+            sums[x] += f64::from(values[entering + x]) - f64::from(values[leaving + x]);
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -534,6 +570,25 @@ mod tests {
         }
         let wrapped = box_sums(&values, 6, 5, 2, true);
         assert_eq!(wrapped[29], values[29] + values[24] + values[5] + values[0]);
+    }
+
+    /// The row-by-row column pass gives the column-at-a-time pass's sums to the bit.
+    #[test]
+    fn column_sums_row_by_row_equal_column_by_column() {
+        let mut rng = crate::core::Rng::new(5);
+        for (w, h, side) in [(7, 5, 2), (13, 9, 4), (5, 12, 5), (16, 16, 16), (9, 4, 1)] {
+            let values: Vec<f32> = (0..w * h).map(|_| rng.next_f32() * 3.0).collect();
+            for wrap in [false, true] {
+                let rows = sliding_sums(&values, w, h, side, wrap, true);
+                let by_column = sliding_sums(&rows, w, h, side, wrap, false);
+                let by_row = sliding_column_sums(&rows, w, h, side, wrap);
+                let same = by_column
+                    .iter()
+                    .zip(&by_row)
+                    .all(|(a, b)| a.to_bits() == b.to_bits());
+                assert!(same, "{w}x{h}, side {side}, wrap {wrap}");
+            }
+        }
     }
 
     #[test]
