@@ -4,6 +4,8 @@
 // whose minimum cut is the seam. The data comes from the session's placementCosts() and
 // placementGraph() (recorded only while this view is on, see setAnatomy).
 
+import { heat, paintGrid } from '../lib/heat.js';
+
 export const ANATOMY_HTML = `
   <section class="anatomy" id="gc-anatomy" hidden aria-label="Placement anatomy">
     <h3>Where could the patch go? <small>C(t), eq. 2</small></h3>
@@ -20,34 +22,10 @@ export const ANATOMY_HTML = `
     <p class="readout" id="gc-graph-readout" aria-live="polite">hover the graph for a pixel's arcs</p>
   </section>`;
 
-/** Dark blue through purple and orange to pale yellow, for t in 0..1. */
-function ramp(t) {
-  const stops = [[12, 14, 40], [80, 30, 110], [190, 60, 80], [245, 150, 50], [250, 240, 170]];
-  const x = Math.min(1, Math.max(0, t)) * (stops.length - 1);
-  const i = Math.min(stops.length - 2, Math.floor(x));
-  const f = x - i;
-  return stops[i].map((a, c) => Math.round(a + (stops[i + 1][c] - a) * f));
-}
-
 /** The value below which `q` of the finite `values` lie. */
 function quantile(values, q) {
   const finite = Array.from(values).filter(Number.isFinite).sort((a, b) => a - b);
   return finite.length ? finite[Math.min(finite.length - 1, Math.floor(q * finite.length))] : 0;
-}
-
-/** Paints one value per cell of a `width` x `height` grid, scaled up without smoothing. */
-function paintGrid(canvas, width, height, colour) {
-  const image = new ImageData(width, height);
-  for (let k = 0; k < width * height; k++) image.data.set([...colour(k), 255], 4 * k);
-  const layer = document.createElement('canvas');
-  layer.width = width;
-  layer.height = height;
-  layer.getContext('2d').putImageData(image, 0, 0);
-  const ctx = canvas.getContext('2d');
-  ctx.imageSmoothingEnabled = false;
-  ctx.clearRect(0, 0, canvas.width, canvas.height);
-  ctx.drawImage(layer, 0, 0, canvas.width, canvas.height);
-  return ctx;
 }
 
 /** Draws the cost surface and the probability map; returns figures the page and tests read. */
@@ -58,9 +36,9 @@ export function drawCosts(costCanvas, probabilityCanvas, c) {
   const high = quantile(cost, 0.9);
   const cell = (x, y, canvas) => [(x + 0.5) * (canvas.width / width), (y + 0.5) * (canvas.height / height)];
   const costCtx = paintGrid(costCanvas, width, height, (k) =>
-    Number.isFinite(cost[k]) ? ramp((cost[k] - low) / (high - low || 1)) : [60, 62, 70]);
+    Number.isFinite(cost[k]) ? heat((cost[k] - low) / (high - low || 1)) : [60, 62, 70]);
   const pMax = Math.max(...probability);
-  const probCtx = paintGrid(probabilityCanvas, width, height, (k) => ramp(Math.sqrt(probability[k] / (pMax || 1))));
+  const probCtx = paintGrid(probabilityCanvas, width, height, (k) => heat(Math.sqrt(probability[k] / (pMax || 1))));
   const best = Array.from(cost).indexOf(low);
   for (const [ctx, canvas] of [[costCtx, costCanvas], [probCtx, probabilityCanvas]]) {
     const [bx, by] = cell(best % width, Math.floor(best / width), canvas);
@@ -105,8 +83,8 @@ export function drawGraph(canvas, g) {
     if (!Number.isNaN(oldRight[k]) || !Number.isNaN(oldDown[k])) return [230, 40, 40];
     if (KIND_TINT[kind[k]]) return KIND_TINT[kind[k]];
     // Kept pixels dimmed, so the region the new patch took reads as the lit one.
-    const heat = ramp(caps[k] / high);
-    return taken[k] ? heat : heat.map((v) => Math.round(v * 0.45));
+    const warm = heat(caps[k] / high);
+    return taken[k] ? warm : warm.map((v) => Math.round(v * 0.45));
   });
   // The cut runs between two pixels in the graph (nodes, or a node and an uncovered pixel) that
   // ended on different sides.

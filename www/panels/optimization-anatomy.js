@@ -6,6 +6,8 @@
 // ||x_p - z_p||^(r-2) as a heat map. The data is the session's field() (grid, matches,
 // distances, weights).
 
+import { heat, paintGrid } from '../lib/heat.js';
+
 export const STEP_ANATOMY_HTML = `
   <section class="anatomy" id="to-anatomy" hidden aria-label="Step anatomy">
     <h3>Chosen neighbourhoods z<sub>p</sub> on the exemplar</h3>
@@ -24,15 +26,6 @@ function nodeColour(i, columns, j, rows) {
   const hue = Math.round((i / Math.max(1, columns - 1)) * 240);
   const light = Math.round(35 + (j / Math.max(1, rows - 1)) * 35);
   return `hsl(${hue} 85% ${light}%)`;
-}
-
-/** Heat ramp for weights: dark blue, purple, orange, pale yellow. */
-function heat(t) {
-  const stops = [[12, 14, 40], [80, 30, 110], [190, 60, 80], [245, 150, 50], [250, 240, 170]];
-  const x = Math.min(1, Math.max(0, t)) * (stops.length - 1);
-  const i = Math.min(stops.length - 2, Math.floor(x));
-  const f = x - i;
-  return stops[i].map((a, c) => Math.round(a + (stops[i + 1][c] - a) * f));
 }
 
 /**
@@ -104,19 +97,10 @@ export function drawWeights(canvas, field) {
   const finite = Array.from(field.weights).filter(Number.isFinite).sort((a, b) => a - b);
   const lo = finite[0] ?? 0;
   const hi = finite[Math.floor(0.95 * (finite.length - 1))] ?? 1;
-  const image = new ImageData(cols, rows);
-  for (let n = 0; n < cols * rows; n++) {
+  paintGrid(canvas, cols, rows, (n) => {
     const v = field.weights[n];
-    const c = Number.isFinite(v) ? heat((v - lo) / (hi - lo || 1)) : [70, 72, 80];
-    image.data.set([...c, 255], 4 * n);
-  }
-  const layer = document.createElement('canvas');
-  layer.width = cols;
-  layer.height = rows;
-  layer.getContext('2d').putImageData(image, 0, 0);
-  const ctx = canvas.getContext('2d');
-  ctx.imageSmoothingEnabled = false;
-  ctx.drawImage(layer, 0, 0, canvas.width, canvas.height);
+    return Number.isFinite(v) ? heat((v - lo) / (hi - lo || 1)) : [70, 72, 80];
+  });
   return { lo, hi, nodes: finite.length };
 }
 

@@ -21,6 +21,8 @@ pub mod synthesis;
 pub mod teaching;
 
 #[cfg(test)]
+mod source_window_tests;
+#[cfg(test)]
 mod tests;
 
 pub use options::{Blend, Options, Placement, Transforms};
