@@ -73,6 +73,33 @@ test('stage 3: pixels, Haar and Daubechies energies run in turn and share one en
   assert.deepEqual(errors, []);
 });
 
+test('stage 3 with step anatomy: E-step and M-step views alternate with the wavelet energy', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-stage="synthesis"]');
+  await page.uncheck('#dsy-compare');
+  await page.selectOption('#dsy-energy-kind', 'haar');
+  await page.check('#dsy-anatomy');
+  assert.equal(await page.isVisible('#dsy-anatomy-views'), true);
+  const halves = [];
+  const images = {};
+  for (let n = 0; n < 4; n++) {
+    const before = await page.textContent('#ds-readout');
+    await page.click('#step');
+    await page.waitForFunction((b) => document.querySelector('#ds-readout').textContent !== b, before);
+    const half = await page.getAttribute('body', 'data-half');
+    halves.push(half);
+    images[half] = await canvasPixels(page);
+  }
+  assert.deepEqual(halves.slice(0, 3), ['first-match', 'e-step', 'm-step'], halves.join(' '));
+  assert.notDeepEqual(images['e-step'], images['m-step'], 'the E-step and M-step views differ');
+  assert.ok(Number(await page.getAttribute('#dsy-weights', 'data-nodes')) > 10, 'the weights are drawn');
+  await page.hover('#output-canvas', { position: { x: 30, y: 30 } });
+  assert.match(await page.textContent('#dsy-node'), /z_p at exemplar/);
+  await page.screenshot({ path: `${RESULTS}/design-anatomy.png`, fullPage: true });
+  await page.uncheck('#dsy-anatomy');
+  assert.deepEqual(errors, []);
+});
+
 test('stage 4: layer-based design runs row by row to done', async () => {
   const { page, errors } = demo;
   await page.click('button[data-stage="layers"]');
