@@ -349,6 +349,41 @@ impl FeatureSynthesis {
     }
 
     /// The synthesised feature map, coloured by orientation (output size).
+    /// Turns on the placement anatomy of graph-cut placement (see `GraphcutTextures.setAnatomy`;
+    /// the cost surface is the colour cost of eq. 2, which the feature cost then re-ranks among
+    /// the best candidates). A scan-placement synthesis has no graph cut: an error names it.
+    #[wasm_bindgen(js_name = setAnatomy)]
+    pub fn set_anatomy(&mut self, on: bool) -> JsResult<()> {
+        let session = self.synthesis.graphcut_session_mut().ok_or_else(|| {
+            crate::core::Error::InvalidParameter {
+                name: "setAnatomy",
+                reason: "the placement anatomy needs placement 'graphcut'".into(),
+            }
+        })?;
+        session.set_anatomy(on);
+        Ok(())
+    }
+
+    /// The last graph-cut placement's cost surface (see `GraphcutTextures.placementCosts`), or
+    /// null.
+    #[wasm_bindgen(js_name = placementCosts)]
+    pub fn placement_costs(&self) -> JsValue {
+        self.synthesis
+            .graphcut_session()
+            .and_then(|s| s.placement_costs())
+            .map_or(JsValue::NULL, super::graphcut::costs_object)
+    }
+
+    /// The last graph-cut placement's seam graph (see `GraphcutTextures.placementGraph`), or
+    /// null.
+    #[wasm_bindgen(js_name = placementGraph)]
+    pub fn placement_graph(&self) -> JsValue {
+        self.synthesis
+            .graphcut_session()
+            .and_then(|s| s.placement_graph())
+            .map_or(JsValue::NULL, super::graphcut::graph_object)
+    }
+
     #[wasm_bindgen(js_name = renderFeatures)]
     pub fn render_features(&self, target: &Uint8ClampedArray) -> JsResult<()> {
         write_rgba(

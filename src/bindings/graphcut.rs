@@ -10,6 +10,7 @@ use super::exemplar::Exemplar;
 use super::options::{OptionsReader, object};
 use super::pixels::{render_into, write_rgba};
 use crate::core::Error;
+use crate::methods::graphcut::anatomy::{CostSurface, GraphView};
 use crate::methods::graphcut::placement::Region;
 use crate::methods::graphcut::teaching::{label_map, seam_heat_map, seam_overlay};
 use crate::methods::graphcut::{Blend, Event, Options, Placement, Session, Transforms};
@@ -231,24 +232,9 @@ impl GraphcutTextures {
     /// the patch's corner (`x + column`); null unless `setAnatomy(true)` came before the step.
     #[wasm_bindgen(js_name = placementCosts)]
     pub fn placement_costs(&self) -> JsValue {
-        let Some(c) = self.session.placement_costs() else {
-            return JsValue::NULL;
-        };
-        let (cx, cy) = c.chosen.map_or((-1.0, -1.0), |(x, y)| (x as f64, y as f64));
-        object(&[
-            ("x", (c.x as f64).into()),
-            ("y", (c.y as f64).into()),
-            ("width", (c.width as u32).into()),
-            ("height", (c.height as u32).into()),
-            ("cost", Float32Array::from(c.cost.as_slice()).into()),
-            (
-                "probability",
-                Float32Array::from(c.probability.as_slice()).into(),
-            ),
-            ("chosenX", cx.into()),
-            ("chosenY", cy.into()),
-            ("temperature", c.temperature.into()),
-        ])
+        self.session
+            .placement_costs()
+            .map_or(JsValue::NULL, costs_object)
     }
 
     /// The last placement's seam graph per pixel of the patch's box: `{ x, y, width, height,
@@ -259,24 +245,9 @@ impl GraphcutTextures {
     /// unless `setAnatomy(true)` came before the step.
     #[wasm_bindgen(js_name = placementGraph)]
     pub fn placement_graph(&self) -> JsValue {
-        let Some(g) = self.session.placement_graph() else {
-            return JsValue::NULL;
-        };
-        object(&[
-            ("x", (g.x as f64).into()),
-            ("y", (g.y as f64).into()),
-            ("width", (g.width as u32).into()),
-            ("height", (g.height as u32).into()),
-            ("kind", Uint8Array::from(g.kind.as_slice()).into()),
-            ("right", Float32Array::from(g.right.as_slice()).into()),
-            ("down", Float32Array::from(g.down.as_slice()).into()),
-            (
-                "oldRight",
-                Float32Array::from(g.old_right.as_slice()).into(),
-            ),
-            ("oldDown", Float32Array::from(g.old_down.as_slice()).into()),
-            ("taken", Uint8Array::from(g.taken.as_slice()).into()),
-        ])
+        self.session
+            .placement_graph()
+            .map_or(JsValue::NULL, graph_object)
     }
 
     /// Names of the sources patches come from ("exemplar", "rotate 90", "scale 0.5", ...).
@@ -288,4 +259,42 @@ impl GraphcutTextures {
             .map(|s| s.name.clone())
             .collect()
     }
+}
+
+/// A cost surface as the JS object `placementCosts()` returns.
+pub(super) fn costs_object(c: &CostSurface) -> JsValue {
+    let (cx, cy) = c.chosen.map_or((-1.0, -1.0), |(x, y)| (x as f64, y as f64));
+    object(&[
+        ("x", (c.x as f64).into()),
+        ("y", (c.y as f64).into()),
+        ("width", (c.width as u32).into()),
+        ("height", (c.height as u32).into()),
+        ("cost", Float32Array::from(c.cost.as_slice()).into()),
+        (
+            "probability",
+            Float32Array::from(c.probability.as_slice()).into(),
+        ),
+        ("chosenX", cx.into()),
+        ("chosenY", cy.into()),
+        ("temperature", c.temperature.into()),
+    ])
+}
+
+/// A seam graph view as the JS object `placementGraph()` returns.
+pub(super) fn graph_object(g: &GraphView) -> JsValue {
+    object(&[
+        ("x", (g.x as f64).into()),
+        ("y", (g.y as f64).into()),
+        ("width", (g.width as u32).into()),
+        ("height", (g.height as u32).into()),
+        ("kind", Uint8Array::from(g.kind.as_slice()).into()),
+        ("right", Float32Array::from(g.right.as_slice()).into()),
+        ("down", Float32Array::from(g.down.as_slice()).into()),
+        (
+            "oldRight",
+            Float32Array::from(g.old_right.as_slice()).into(),
+        ),
+        ("oldDown", Float32Array::from(g.old_down.as_slice()).into()),
+        ("taken", Uint8Array::from(g.taken.as_slice()).into()),
+    ])
 }

@@ -111,3 +111,25 @@ test('every method panel explains what is on screen and cites its paper', async 
   assert.ok(cited.length >= 7, cited.join(', '));
   assert.deepEqual(errors, []);
 });
+
+test('feature-guided graph-cut placements show their anatomy too', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-panel="features"]');
+  await page.click('button[data-sample="brick_128"]');
+  await page.waitForSelector('body[data-exemplar="brick 128×128"]');
+  await page.fill('#out-width', '192');
+  await page.fill('#out-height', '192');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.check('#fg-anatomy-on');
+  assert.equal(await page.isVisible('#gc-anatomy'), true);
+  for (let n = 1; n <= 3; n++) {
+    await page.click('#step');
+    await page.waitForSelector(`body[data-feature-patches="${n}"]`);
+  }
+  const legend = await page.$eval('#gc-cost-legend', (e) => ({ ...e.dataset }));
+  assert.ok(Number(legend.offsets) > 50, `${legend.offsets} candidate offsets`);
+  assert.ok(Number(await page.getAttribute('#gc-graph', 'data-cut-pixels')) > 10, 'a seam is drawn');
+  assert.match(await page.textContent('#gc-anatomy h3'), /feature cost re-ranks/);
+  await page.screenshot({ path: `${RESULTS}/anatomy-features.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});

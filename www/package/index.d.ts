@@ -690,6 +690,10 @@ export class FeatureSynthesis implements Steppable<FeatureSynthesisEvent> {
   renderInto(target: RgbaTarget): void;
   /** The synthesised feature map, coloured by orientation. */
   renderFeatures(target: RgbaTarget): void;
+  /** Graph-cut placement only: records each placement's cost surface (the colour cost, which the feature cost re-ranks) and seam graph. @throws {TexsynthError} with scan placement. */
+  setAnatomy(on: boolean): void;
+  placementCosts(): PlacementCosts | null;
+  placementGraph(): PlacementGraph | null;
   placement(): FeaturePlacement;
   readonly done: boolean;
   readonly width: number;

@@ -9,6 +9,7 @@ import { drawInto, drawOverlay } from '../lib/canvas.js';
 import { showQuality } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
+import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
 
 export const id = 'features';
 export const title = 'Feature-guided';
@@ -22,6 +23,7 @@ const OPTIONS_HTML = `
   <label title="patch side (the paper: 32 to 64)">patch <input id="fg-patch" type="number" value="64" min="16" max="128"></label>
   <label title="bend each patch so its features meet the placed ones (section 2.2)"><input id="fg-warp" type="checkbox" checked> warp</label>
   <label><input id="fg-compare" type="checkbox" checked> compare with graph cut</label>
+  <label title="graph-cut placement: each placement's colour-cost surface, probabilities and seam graph"><input id="fg-anatomy-on" type="checkbox"> placement anatomy</label>
   <span class="views">exemplar map:
     <label><input type="radio" name="fg-brush" class="view" value="off" checked> view</label>
     <label><input type="radio" name="fg-brush" class="view" value="paint"> paint</label>
@@ -38,7 +40,8 @@ const SIDE_HTML = `
   <p class="quality" id="fg-quality"></p>
   <p class="legend">On the output: the patch (white), its context region (yellow), each correspondence as a line
   from where the partner feature lay to where the warp moved it (cyan), and the warp as a deformed grid.
-  Feature colours give the orientation bucket.</p>`;
+  Feature colours give the orientation bucket.</p>
+  ${ANATOMY_HTML.replace('C(t), eq. 2', 'colour cost C(t), eq. 2; the feature cost re-ranks its best')}`;
 
 export function createPanel(ui) {
   let map = null;
@@ -47,7 +50,13 @@ export function createPanel(ui) {
   let graphcut = null;
   let pending = null;
   let painting = false;
-  const FEATURE_VIEWS = { views: ['renderInto', 'renderFeatures'], calls: ['placement'] };
+  // With the placement anatomy on (graph-cut placement), each step also brings back the
+  // placement's cost surface and seam graph (recorded by the session only when asked).
+  const anatomyOn = () => ui.$('fg-anatomy-on').checked && ui.$('fg-placement').value === 'graphcut';
+  const FEATURE_VIEWS = () => ({
+    views: ['renderInto', 'renderFeatures'],
+    calls: anatomyOn() ? ['placement', 'placementCosts', 'placementGraph'] : ['placement'],
+  });
 
   const detectOptions = () => ({ features: ui.$('fg-kind').value, threshold: Number(ui.$('fg-threshold').value) });
 
@@ -185,6 +194,11 @@ export function createPanel(ui) {
       ui.$('fg-threshold').addEventListener('input', () => {
         ui.$('fg-threshold-value').textContent = Number(ui.$('fg-threshold').value).toFixed(2);
       });
+      // The anatomy is recorded from the session's start: toggling it starts over.
+      ui.$('fg-anatomy-on').addEventListener('change', () => {
+        ui.$('gc-anatomy').hidden = !anatomyOn();
+        resetSessions();
+      });
       for (const id of ['fg-threshold', 'fg-kind']) {
         ui.$(id).addEventListener('change', () => { detect(); resetSessions(); });
       }
@@ -200,6 +214,7 @@ export function createPanel(ui) {
       if (!synthesis) {
         synthesis = await made(() => remoteSession('FeatureSynthesis', [ui.exemplar(), options()], FEATURE_VIEWS));
         if (!synthesis) return null;
+        if (anatomyOn()) await synthesis.send('setAnatomy', true);
       }
       const compare = ui.$('fg-compare').checked;
       if (!synthesis.done) {
@@ -232,6 +247,7 @@ export function createPanel(ui) {
         ui.$('fg-readout').textContent = `patch ${event.patch + 1}/${event.patches} from (${event.sourceX}, ${event.sourceY}) · ` +
           `${event.contextFeatures} context features · ${event.correspondences} correspondences · warp: ${event.warp} · ${how}`;
         document.body.dataset.featurePatches = String(event.patch + 1);
+        if (anatomyOn()) showPlacementAnatomy(ui.$, synthesis.result('placementCosts'), synthesis.result('placementGraph'));
         if (event.featuresDone) {
           const b = broken(synthesis);
           const quality = ui.$('fg-quality');

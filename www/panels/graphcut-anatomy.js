@@ -124,3 +124,26 @@ export function describePixel(g, x, y) {
   return `pixel (${g.x + x}, ${g.y + y}): ${names[g.kind[k]]}; arc right ${arc(g.right[k])}${seam(g.oldRight[k])}, ` +
     `arc down ${arc(g.down[k])}${seam(g.oldDown[k])}; ${g.taken[k] ? 'took the new patch' : 'kept the old output'}`;
 }
+
+/**
+ * Draws a placement's anatomy into the section of ANATOMY_HTML (`$` finds its elements by id),
+ * leaves its figures as data attributes for tests, and makes the graph hoverable.
+ */
+export function showPlacementAnatomy($, surface, graph) {
+  if (surface) {
+    const f = drawCosts($('gc-cost'), $('gc-probability'), surface);
+    Object.assign($('gc-cost-legend').dataset, {
+      chosenRank: String(f.chosenRank), chosenProbability: String(f.chosenProbability), offsets: String(f.offsets),
+    });
+  }
+  if (graph) {
+    const f = drawGraph($('gc-graph'), graph);
+    $('gc-graph').dataset.cutPixels = String(f.cutPixels);
+    $('gc-graph').onpointermove = (e) => {
+      const rect = e.currentTarget.getBoundingClientRect();
+      const x = Math.floor(((e.clientX - rect.left) / rect.width) * graph.width);
+      const y = Math.floor(((e.clientY - rect.top) / rect.height) * graph.height);
+      $('gc-graph-readout').textContent = describePixel(graph, x, y);
+    };
+  }
+}

@@ -6,7 +6,7 @@ import { drawLinePlot } from '../lib/plot.js';
 import { showQuality } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
-import { ANATOMY_HTML, describePixel, drawCosts, drawGraph } from './graphcut-anatomy.js';
+import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
 
 export const id = 'graphcut';
 export const title = 'Graphcut textures';
@@ -118,24 +118,7 @@ export function createPanel(ui) {
   /** Draws the last placement's anatomy and leaves its figures on the page for tests. */
   function drawAnatomy() {
     if (!anatomyOn() || !session) return;
-    const surface = session.result('placementCosts');
-    const graph = session.result('placementGraph');
-    if (surface) {
-      const f = drawCosts(ui.$('gc-cost'), ui.$('gc-probability'), surface);
-      ui.$('gc-cost-legend').dataset.chosenRank = String(f.chosenRank);
-      ui.$('gc-cost-legend').dataset.chosenProbability = String(f.chosenProbability);
-      ui.$('gc-cost-legend').dataset.offsets = String(f.offsets);
-    }
-    if (graph) {
-      const f = drawGraph(ui.$('gc-graph'), graph);
-      ui.$('gc-graph').dataset.cutPixels = String(f.cutPixels);
-      ui.$('gc-graph').onpointermove = (e) => {
-        const rect = e.currentTarget.getBoundingClientRect();
-        const x = Math.floor(((e.clientX - rect.left) / rect.width) * graph.width);
-        const y = Math.floor(((e.clientY - rect.top) / rect.height) * graph.height);
-        ui.$('gc-graph-readout').textContent = describePixel(graph, x, y);
-      };
-    }
+    showPlacementAnatomy(ui.$, session.result('placementCosts'), session.result('placementGraph'));
     document.body.dataset.anatomyPatches = String(lastEvent?.patchesPlaced ?? 0);
   }
 

@@ -272,6 +272,18 @@ impl FeatureSynthesis {
     }
 
     /// One step of graph-cut placement with the feature cost.
+    /// The graph-cut session that places the patches (graph-cut placement only): its placement
+    /// anatomy (cost surface, seam graph) is the page's view of a feature-guided placement.
+    #[must_use]
+    pub fn graphcut_session(&self) -> Option<&crate::methods::graphcut::Session> {
+        self.graphcut.as_ref().map(|g| &g.session)
+    }
+
+    /// The same, mutable (to turn its anatomy on).
+    pub fn graphcut_session_mut(&mut self) -> Option<&mut crate::methods::graphcut::Session> {
+        self.graphcut.as_mut().map(|g| &mut g.session)
+    }
+
     fn place_graphcut(&mut self) -> Result<FeatureEvent> {
         let g = self.graphcut.as_mut().expect("graph-cut placement");
         let e = g.step()?;
