@@ -67,10 +67,13 @@ export function createPanel(ui) {
 
   /** What every step brings back from the worker: the teaching view only while it is shown. */
   function wanted() {
-    const teaching = ui.$('to-teaching').checked || anatomyOn();
+    // The teaching view draws the offset map and the grid; the step anatomy needs only the grid
+    // and matches (field), so the worker does not render an offset map for it at every step.
+    const teaching = ui.$('to-teaching').checked;
+    const field = teaching || anatomyOn();
     return {
       views: teaching ? ['renderInto', 'renderOffsetMap'] : ['renderInto'],
-      calls: teaching ? ['energyHistory', 'historyLevels', 'field'] : ['energyHistory', 'historyLevels'],
+      calls: field ? ['energyHistory', 'historyLevels', 'field'] : ['energyHistory', 'historyLevels'],
       getters: ['constraintEnergy'],
       finalViews: ['renderInto', 'renderOffsetMap'],
       finalCalls: ['energyHistory', 'historyLevels', 'field'],

@@ -78,6 +78,26 @@ fn random_weights(rng: &mut Rng, pixels: usize, kind: u32) -> Option<Vec<f32>> {
     }
 }
 
+/// Entry `index` of `map` equals the direct `(cost, area)` to a relative 1e-5.
+fn assert_entry(
+    map: &SsdMap,
+    index: usize,
+    (cost, area): (f64, f64),
+    context: impl Fn() -> String,
+) {
+    let (got_cost, got_area) = (f64::from(map.costs()[index]), f64::from(map.areas()[index]));
+    assert!(
+        (got_area - area).abs() <= 1e-5 * (1.0 + area),
+        "area {got_area} vs {area}: {}",
+        context()
+    );
+    assert!(
+        (got_cost - cost).abs() <= 1e-5 * (1.0 + cost),
+        "cost {got_cost} vs {cost}: {}",
+        context()
+    );
+}
+
 fn assert_matches_direct(rng: &mut Rng, boundary: Boundary, rounds: usize, max_side: usize) {
     let mut search = SsdSearch::new();
     for round in 0..rounds {
@@ -97,20 +117,13 @@ fn assert_matches_direct(rng: &mut Rng, boundary: Boundary, rounds: usize, max_s
         assert_eq!(map.costs().len(), costs.len(), "round {round}");
         assert_eq!(map.width() * map.height(), costs.len());
         for (index, (&cost, &area)) in costs.iter().zip(&areas).enumerate() {
-            let (got_cost, got_area) =
-                (f64::from(map.costs()[index]), f64::from(map.areas()[index]));
-            let context = format!(
-                "round {round}, {boundary:?}, {ow}x{oh} output, {pw}x{ph} patch, {channels} channels, offset {:?}",
-                map.offset(index)
-            );
-            assert!(
-                (got_area - area).abs() <= 1e-5 * (1.0 + area),
-                "area {got_area} vs {area}: {context}"
-            );
-            assert!(
-                (got_cost - cost).abs() <= 1e-5 * (1.0 + cost),
-                "cost {got_cost} vs {cost}: {context}"
-            );
+            let context = || {
+                format!(
+                    "round {round}, {boundary:?}, {ow}x{oh} output, {pw}x{ph} patch, {channels} channels, offset {:?}",
+                    map.offset(index)
+                )
+            };
+            assert_entry(&map, index, (cost, area), context);
         }
     }
 }
@@ -374,19 +387,12 @@ fn a_range_search_matches_direct_ssd_on_its_offsets() {
             } else {
                 (0.0, 0.0) // no overlap at all
             };
-            let (got_cost, got_area) =
-                (f64::from(map.costs()[index]), f64::from(map.areas()[index]));
-            let context = format!(
-                "round {round}, {ow}x{oh} output, {pw}x{ph} patch, {range:?}, offset ({tx}, {ty})"
-            );
-            assert!(
-                (got_area - area).abs() <= 1e-5 * (1.0 + area),
-                "area {got_area} vs {area}: {context}"
-            );
-            assert!(
-                (got_cost - cost).abs() <= 1e-5 * (1.0 + cost),
-                "cost {got_cost} vs {cost}: {context}"
-            );
+            let context = || {
+                format!(
+                    "round {round}, {ow}x{oh} output, {pw}x{ph} patch, {range:?}, offset ({tx}, {ty})"
+                )
+            };
+            assert_entry(&map, index, (cost, area), context);
         }
         let full = transform_size((ow, oh), (pw, ph), Boundary::Open);
         let used = search.transform.as_ref().map(|t| (t.nx, t.ny)).unwrap();
