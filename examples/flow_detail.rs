@@ -3,7 +3,8 @@
 //! Prints frame 1's flat fraction, coherence and flow energy, the means over frames 30-60 and
 //! their ratios to frame 1, beside the naive warp's; `WRITE=dir` writes frames 1 and the last as
 //! PNGs. Options from the environment: `HIST` (histogramMatching, 1), `LAMBDA` (0.2),
-//! `FRAME_ITERATIONS` (3), `FRAME_SIZES` (the default, 32,16,8), `EVERY` (1).
+//! `FRAME_ITERATIONS` (3), `FRAME_SIZES` (the default, 32,16,8), `EVERY` (1); `KIND` and
+//! `STRENGTH` pick another single flow (vortex, 2).
 
 use texsynth::core::{decode, encode_png};
 use texsynth::methods::flow::{
@@ -19,7 +20,13 @@ fn main() {
     let path = format!("{}/www/samples/{name}.png", env!("CARGO_MANIFEST_DIR"));
     let exemplar = decode(&std::fs::read(path).expect("sample")).expect("decodes");
     let flow = FlowSource::Generator(
-        FlowSpec::new(vec![Component::new(FlowKind::Vortex, 2.0)]).expect("spec"),
+        FlowSpec::new(vec![Component::new(
+            std::env::var("KIND").map_or(FlowKind::Vortex, |k| {
+                FlowKind::from_name(&k).expect("a flow kind")
+            }),
+            std::env::var("STRENGTH").map_or(2.0, |v| v.parse().expect("number")),
+        )])
+        .expect("spec"),
     );
     let options = FlowOptions {
         output_width: size,
