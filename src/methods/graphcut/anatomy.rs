@@ -161,10 +161,12 @@ impl GraphView {
         graph: &SeamGraph,
         origin: (i64, i64),
         (width, height): (usize, usize),
-        local: impl Fn(usize) -> Option<usize>,
-        next: impl Fn(usize, usize) -> Option<usize>,
+        local: &dyn Fn(usize) -> Option<usize>,
+        next: &dyn Fn(usize, usize) -> Option<usize>,
         taken: &[usize],
     ) -> GraphView {
+        // Dynamic closures: one copy of this teaching-only code serves images and video (the
+        // .wasm size budget), at no cost that matters for a view built once per placement.
         let n = width * height;
         let mut view = GraphView {
             x: origin.0,

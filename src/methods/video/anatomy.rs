@@ -105,8 +105,8 @@ impl Synthesis {
             graph,
             (xs.start as i64, ys.start as i64),
             (bw, bh),
-            local,
-            |i, axis| self.canvas.next(i, AXES[axis]),
+            &local,
+            &|i, axis| self.canvas.next(i, AXES[axis]),
             taken,
         );
         GraphSlice {
