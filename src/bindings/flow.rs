@@ -8,7 +8,7 @@ use wasm_bindgen::{JsCast, prelude::*};
 use super::error::JsResult;
 use super::exemplar::Exemplar;
 use super::options::{OptionsReader, object};
-use super::pixels::{render_into, write_rgba};
+use super::pixels::{check_target, render_into, write_rgba};
 use crate::core::Error;
 use crate::core::error::check_size;
 use crate::methods::flow::{
@@ -359,6 +359,17 @@ impl FlowAnimation {
     /// frame 1, which has no previous frame.
     #[wasm_bindgen(js_name = renderWarpedInto)]
     pub fn render_warped_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        // The target first, as every renderer checks it: a bad buffer is named whatever the frame.
+        check_target(target)?;
+        let expected = (self.width() * self.height()) as usize * 4;
+        if target.length() as usize != expected {
+            return Err(Error::LengthMismatch {
+                what: "target pixel array",
+                expected,
+                actual: target.length() as usize,
+            }
+            .into());
+        }
         let Some(constraint) = self.session.warped_previous() else {
             return Err(invalid(
                 "renderWarpedInto",

@@ -62,6 +62,7 @@ const WARPED_HTML = `
 const SIDE_HTML = `
   <div class="readout" id="fl-readout">press Run or Step (frames of 128×128 run live; 256×256 at a few per second)</div>
   <div class="explain" id="fl-explain" data-history-text aria-live="polite"></div>
+  ${stepAnatomyHtml(WARPED_HTML)}
   <div class="side-row">
     <figure><canvas id="fl-playback" width="128" height="128" aria-label="Finished frames, playing"></canvas>
       <figcaption>finished frames, looping</figcaption></figure>
@@ -71,8 +72,7 @@ const SIDE_HTML = `
   <figure><canvas id="fl-arrows" width="140" height="140" aria-label="Flow field"></canvas>
     <figcaption id="fl-arrows-caption">the flow</figcaption></figure>
   <canvas id="fl-texture" class="plot" width="296" height="110" aria-label="Texture energy per frame"></canvas>
-  <canvas id="fl-flow-energy" class="plot" width="296" height="110" aria-label="Flow energy per frame"></canvas>
-  ${stepAnatomyHtml(WARPED_HTML)}`;
+  <canvas id="fl-flow-energy" class="plot" width="296" height="110" aria-label="Flow energy per frame"></canvas>`;
 
 /** Creates the panel. `ui` gives the shared controls, canvas and exemplar. */
 export function createPanel(ui) {

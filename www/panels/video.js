@@ -46,6 +46,10 @@ const OPTIONS_HTML = `
 const SIDE_HTML = `
   <div class="readout" id="vt-readout">press Run or Step</div>
   <div class="explain" id="vt-explain" data-history-text aria-live="polite"></div>
+  ${ANATOMY_HTML
+    .replace('aria-label="Placement anatomy">', 'aria-label="Placement anatomy">\n    <p class="legend" id="vt-anatomy-slice"></p>')
+    .replace('C(t), eq. 2', 'C(t), eq. 4, one time shift')
+    .replace('section 3, 3.1</small>', 'sections 3, 3.1, 7; one frame</small>')}
   <div class="side-row">
     <figure><canvas id="vt-playback" width="128" height="128" style="width: 128px; image-rendering: pixelated" aria-label="Output, playing"></canvas>
       <figcaption id="vt-playback-caption">output, looping</figcaption></figure>
@@ -61,9 +65,7 @@ const SIDE_HTML = `
       <figcaption>after it</figcaption></figure>
   </div>
   <p class="legend" id="vt-loop-caption">The loop point and the frames on either side of it.</p>
-  ${ANATOMY_HTML
-    .replace('C(t), eq. 2', 'C(t), eq. 4, one time shift')
-    .replace('section 3, 3.1</small></h3>', 'section 3, 3.1, 7</small></h3>\n    <p class="legend" id="vt-anatomy-slice"></p>')}`;
+`;
 
 export function createPanel(ui) {
   let clip = null;
