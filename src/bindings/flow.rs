@@ -8,7 +8,7 @@ use wasm_bindgen::{JsCast, prelude::*};
 use super::error::JsResult;
 use super::exemplar::Exemplar;
 use super::options::{OptionsReader, object};
-use super::pixels::render_into;
+use super::pixels::{check_target, render_into, write_rgba};
 use crate::core::Error;
 use crate::core::error::check_size;
 use crate::methods::flow::{
@@ -325,5 +325,63 @@ impl FlowAnimation {
     pub fn flow_energy_history(&self) -> Float64Array {
         let v: Vec<f64> = self.session.history().iter().map(|e| e.flow).collect();
         Float64Array::from(v.as_slice())
+    }
+
+    /// Step anatomy (as `TextureOptimization.setHalfSteps`): with `true` every step ends after
+    /// one half of an EM iteration, in frame 1's multi-level synthesis and in every later frame:
+    /// a part event `{ kind: 'part', phase: 'first-match' }` after the M-step on a frame's warped
+    /// start (or a level's up-sampled output), `'e-step'` after each E-step, then the
+    /// iteration's event after its M-step. `false` steps whole iterations again. The frames are
+    /// the same either way.
+    #[wasm_bindgen(js_name = setHalfSteps)]
+    pub fn set_half_steps(&mut self, on: bool) {
+        self.session.set_half_steps(on);
+    }
+
+    /// The neighbourhood grid and matches the last step worked on, as
+    /// `TextureOptimization.field()` returns them (`{ columns, rows, neighbourhoodSize,
+    /// levelWidth, levelHeight, exemplarWidth, exemplarHeight, matches, distances, weights, r }`):
+    /// frame 1's current level, then the frame level (one per frame neighbourhood size, at full
+    /// resolution) last iterated. `null` before the first step and from the step that finishes
+    /// frame 1 until frame 2 iterates.
+    pub fn field(&self) -> JsValue {
+        match self.session.anatomy_field() {
+            Some((f, solver)) => {
+                super::optimization::field_object(&f, Some(solver), self.session.options().r)
+            }
+            None => JsValue::NULL,
+        }
+    }
+
+    /// Writes the previous frame carried along the flow into `target` (RGBA8, `width * height
+    /// * 4`): the soft-constraint target of eq. 3 and the start of the current frame, with alpha
+    /// 0 where the warp's source lies outside the frame (the constraint's mask). Throws during
+    /// frame 1, which has no previous frame.
+    #[wasm_bindgen(js_name = renderWarpedInto)]
+    pub fn render_warped_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        // The target first, as every renderer checks it: a bad buffer is named whatever the frame.
+        check_target(target)?;
+        let expected = (self.width() * self.height()) as usize * 4;
+        if target.length() as usize != expected {
+            return Err(Error::LengthMismatch {
+                what: "target pixel array",
+                expected,
+                actual: target.length() as usize,
+            }
+            .into());
+        }
+        let Some(constraint) = self.session.warped_previous() else {
+            return Err(invalid(
+                "renderWarpedInto",
+                "frame 1 has no warped previous frame (it is plain texture optimisation); \
+                 call it once frame 2 has begun",
+            ));
+        };
+        // The mask as alpha, so that a canvas shows where the constraint does not hold.
+        let mut rgba = crate::core::to_rgba8(&constraint.target);
+        for (pixel, &m) in rgba.chunks_exact_mut(4).zip(&constraint.mask) {
+            pixel[3] = (m.clamp(0.0, 1.0) * 255.0).round() as u8;
+        }
+        write_rgba(&rgba, target)
     }
 }

@@ -11,6 +11,7 @@ use super::options::{OptionsReader, object};
 use super::pixels::render_into;
 use crate::core::{Error, from_rgba8};
 use crate::methods::optimization::SoftConstraints;
+use crate::methods::optimization::level::LevelSolver;
 use crate::methods::optimization::session::Phase;
 use crate::methods::optimization::teaching::{Field, field, offset_map};
 use crate::methods::optimization::{Energy, Event, EventKind, Options, Session};
@@ -309,50 +310,53 @@ impl TextureOptimization {
     /// after the last M-step), `weights` (the next E-step's IRLS weights) and `r`. `null`
     /// before the first step.
     pub fn field(&self) -> JsValue {
-        let Some(Field {
-            level,
-            columns,
-            rows,
-            matches,
-        }) = field(&self.session)
-        else {
-            return JsValue::NULL;
-        };
-        let to_u32 = |v: &[usize]| {
-            Uint32Array::from(v.iter().map(|&x| x as u32).collect::<Vec<_>>().as_slice())
-        };
-        let pairs: Vec<u32> = matches.iter().flat_map(|m| [m.x, m.y]).collect();
-        // ||x_p - z_p|| per node after the last M-step, and the IRLS weight of the next E-step
-        // (eq. 5: ||x_p - z_p||^(r - 2)); both NaN before the first M-step of the level.
-        let r = self.session.options().r;
-        let solver = self.session.level_solver();
-        let squared = solver.map_or(&[][..], |s| s.distances());
-        let distances: Vec<f32> = squared
-            .iter()
-            .map(|&d| if d.is_finite() { d.sqrt() } else { f32::NAN })
-            .collect();
-        let weights: Vec<f32> = squared
-            .iter()
-            .map(|&d| {
-                if d.is_finite() {
-                    crate::methods::optimization::e_step::robust_weight(d, r)
-                } else {
-                    f32::NAN
-                }
-            })
-            .collect();
-        object(&[
-            ("distances", Float32Array::from(distances.as_slice()).into()),
-            ("weights", Float32Array::from(weights.as_slice()).into()),
-            ("r", r.into()),
-            ("columns", to_u32(columns).into()),
-            ("rows", to_u32(rows).into()),
-            ("neighbourhoodSize", (level.size as u32).into()),
-            ("levelWidth", (level.output_width as u32).into()),
-            ("levelHeight", (level.output_height as u32).into()),
-            ("exemplarWidth", (level.exemplar_width as u32).into()),
-            ("exemplarHeight", (level.exemplar_height as u32).into()),
-            ("matches", Uint32Array::from(pairs.as_slice()).into()),
-        ])
+        match field(&self.session) {
+            Some(f) => field_object(&f, self.session.level_solver(), self.session.options().r),
+            None => JsValue::NULL,
+        }
     }
+}
+
+/// A neighbourhood grid with its matches as the JS object `field()` returns (texture
+/// optimisation and the frames of a flow animation share it): the grid, the matches, and from
+/// `solver`, ||x_p - z_p|| per node after the last M-step and the IRLS weight of the next
+/// E-step (eq. 5: ||x_p - z_p||^(r - 2)), both NaN before the level's first M-step.
+pub(crate) fn field_object(f: &Field<'_>, solver: Option<&LevelSolver>, r: f32) -> JsValue {
+    let Field {
+        level,
+        columns,
+        rows,
+        matches,
+    } = *f;
+    let to_u32 =
+        |v: &[usize]| Uint32Array::from(v.iter().map(|&x| x as u32).collect::<Vec<_>>().as_slice());
+    let pairs: Vec<u32> = matches.iter().flat_map(|m| [m.x, m.y]).collect();
+    let squared = solver.map_or(&[][..], |s| s.distances());
+    let distances: Vec<f32> = squared
+        .iter()
+        .map(|&d| if d.is_finite() { d.sqrt() } else { f32::NAN })
+        .collect();
+    let weights: Vec<f32> = squared
+        .iter()
+        .map(|&d| {
+            if d.is_finite() {
+                crate::methods::optimization::e_step::robust_weight(d, r)
+            } else {
+                f32::NAN
+            }
+        })
+        .collect();
+    object(&[
+        ("distances", Float32Array::from(distances.as_slice()).into()),
+        ("weights", Float32Array::from(weights.as_slice()).into()),
+        ("r", r.into()),
+        ("columns", to_u32(columns).into()),
+        ("rows", to_u32(rows).into()),
+        ("neighbourhoodSize", (level.size as u32).into()),
+        ("levelWidth", (level.output_width as u32).into()),
+        ("levelHeight", (level.output_height as u32).into()),
+        ("exemplarWidth", (level.exemplar_width as u32).into()),
+        ("exemplarHeight", (level.exemplar_height as u32).into()),
+        ("matches", Uint32Array::from(pairs.as_slice()).into()),
+    ])
 }

@@ -6,6 +6,7 @@ use js_sys::Uint8Array;
 use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
+use super::graphcut::{costs_object, graph_object};
 use super::options::{OptionsReader, object};
 use super::pixels::check_target;
 use crate::core::Error;
@@ -230,6 +231,60 @@ impl VideoTextures {
         self.rendered(w * d, |s, out| slice_xt_rgba(s, y as usize, out))
     }
 
+    /// Turns the placement anatomy on or off (as `GraphcutTextures.setAnatomy`): while on, every
+    /// placement keeps one slice of its cost surface and of its seam graph for
+    /// `placementCosts()` and `placementGraph()` (off by default).
+    #[wasm_bindgen(js_name = setAnatomy)]
+    pub fn set_anatomy(&mut self, on: bool) {
+        self.session.set_anatomy(on);
+    }
+
+    /// The last placement's cost surface, as `GraphcutTextures.placementCosts()` returns it,
+    /// over one slice of the 3-D offsets: with `axes: 'xy'` the spatial offsets (x + column, y +
+    /// row) at the drawn temporal offset `tt` (output frames), the probabilities of eq. 3 given
+    /// that `tt`; with `axes: 't'` (temporal offsets only, 7.B) a row over the temporal offsets
+    /// (x + column is tt). `null` unless `setAnatomy(true)` came before the step, and for
+    /// placements without matching costs (placement 'random', loops, 7.D's fixed frames, the
+    /// first patch).
+    #[wasm_bindgen(js_name = placementCosts)]
+    pub fn placement_costs(&self) -> JsValue {
+        let Some(slice) = self.session.placement_costs() else {
+            return JsValue::NULL;
+        };
+        let value = costs_object(&slice.surface);
+        let tt = self.session.output_frame(i64::from(slice.tt)) as f64;
+        set(
+            &value,
+            "axes",
+            if slice.temporal { "t" } else { "xy" }.into(),
+        );
+        set(&value, "tt", tt.into());
+        if slice.temporal {
+            // The row's x is the canvas tt: shift it to output frames as `tt` is.
+            let shift = tt - f64::from(slice.tt);
+            set(&value, "x", (slice.surface.x as f64 + shift).into());
+        }
+        value
+    }
+
+    /// The last placement's seam graph in one frame of the patch's box, as
+    /// `GraphcutTextures.placementGraph()` returns it (x, y: the box's corner in the output),
+    /// with `frame` (the output frame shown: the box's frame with the most graph nodes, where
+    /// most of the seam surface is cut), `firstFrame` and `frames` (the box along time). Arcs
+    /// along time are not in the slice. `null` unless `setAnatomy(true)` came before the step.
+    #[wasm_bindgen(js_name = placementGraph)]
+    pub fn placement_graph(&self) -> JsValue {
+        let Some(slice) = self.session.placement_graph() else {
+            return JsValue::NULL;
+        };
+        let value = graph_object(&slice.view);
+        let frame = |t: usize| self.session.output_frame(t as i64) as f64;
+        set(&value, "frame", frame(slice.t).into());
+        set(&value, "firstFrame", frame(slice.first_frame).into());
+        set(&value, "frames", (slice.frames as u32).into());
+        value
+    }
+
     /// The frame the last patch reached into (frame 0 before the first step), as RGBA: what a
     /// generic progress view (a worker's step image, the CLI) shows.
     #[wasm_bindgen(js_name = renderInto)]
@@ -271,4 +326,9 @@ impl VideoTextures {
         rgba.copy_from(&self.buffer);
         Ok(())
     }
+}
+
+/// Sets `key` on an object this module made (it cannot fail on a plain object).
+fn set(object: &JsValue, key: &str, value: JsValue) {
+    let _ = js_sys::Reflect::set(object, &key.into(), &value);
 }

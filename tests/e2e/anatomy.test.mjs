@@ -133,3 +133,108 @@ test('feature-guided graph-cut placements show their anatomy too', async () => {
   await page.screenshot({ path: `${RESULTS}/anatomy-features.png`, fullPage: true });
   assert.deepEqual(errors, []);
 });
+
+test('the flow panel splits a frame into E-step and M-step beside its warped previous frame', async () => {
+  const { page, errors } = demo;
+  await page.setViewportSize({ width: 1280, height: 720 });
+  await page.click('button[data-panel="flow"]');
+  await page.click('button[data-sample="gravel_64"]');
+  await page.waitForSelector('body[data-exemplar="gravel 64×64"]');
+  await page.fill('#out-width', '64');
+  await page.fill('#out-height', '64');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.fill('#fl-frames', '3');
+  await page.dispatchEvent('#fl-frames', 'change');
+  await page.check('#fl-anatomy-on');
+  assert.equal(await page.isVisible('#to-anatomy'), true);
+  const pixels = () => page.$eval('#output-canvas', (c) => Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data));
+  // Frame 1 (index 0) is texture optimization split the same way; then frame 2's halves.
+  const halves = [];
+  let eImage = null;
+  let mImage = null;
+  for (let n = 1; n <= 120 && !mImage; n++) {
+    await page.click('#step');
+    await page.waitForSelector(`body[data-flow-steps="${n}"]`);
+    const { flowHalf: half, flowFrame: frame } = await page.$eval('body', (b) => ({ ...b.dataset }));
+    if (frame === '0') {
+      if (halves.length < 3) halves.push(half);
+      continue;
+    }
+    if (half === 'e-step') eImage = await pixels();
+    else if (eImage) mImage = await pixels();
+  }
+  assert.deepEqual(halves, ['first-match', 'e-step', 'm-step'], 'frame 1 starts with a level\'s halves');
+  assert.ok(eImage && mImage, 'a later frame showed an E-step and the M-step after it');
+  let differing = 0;
+  for (let i = 0; i < eImage.length; i += 4) if (eImage[i] !== mImage[i] || eImage[i + 1] !== mImage[i + 1]) differing++;
+  assert.ok(differing > eImage.length / 4 / 10, `${differing} pixels differ between the E-step and M-step views`);
+  // The warped previous frame is drawn, opaque where the flow brought something in.
+  const warped = await page.$eval('#fl-warped', (c) => {
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let opaque = 0;
+    for (let i = 3; i < d.length; i += 4) if (d[i] === 255) opaque++;
+    return { opaque, pixels: d.length / 4, width: c.width };
+  });
+  assert.equal(warped.width, 64);
+  assert.ok(warped.opaque > warped.pixels / 2, `${warped.opaque} of ${warped.pixels} warped pixels opaque`);
+  assert.match(await page.textContent('#fl-warped-legend'), /Frame [2-9]/);
+  assert.ok(Number(await page.getAttribute('#to-weights', 'data-nodes')) > 10, 'the IRLS weights are drawn');
+  assert.match(await page.textContent('#fl-explain'), /(M-step|E-step) of a flow frame/);
+  await page.click('#fl-explain summary');
+  assert.match(await page.textContent('#fl-explain .cite'), /Kwatra.*2005.*section 4\.1/);
+  await page.hover('#output-canvas', { position: { x: 40, y: 40 } });
+  assert.match(await page.textContent('#to-node-readout'), /node \(\d+, \d+\).*z_p at exemplar \(\d+, \d+\); .*IRLS weight/);
+  await page.screenshot({ path: `${RESULTS}/anatomy-flow.png`, fullPage: false });
+  await page.screenshot({ path: `${RESULTS}/anatomy-flow-full.png`, fullPage: true });
+  await page.uncheck('#fl-anatomy-on');
+  assert.equal(await page.isVisible('#to-anatomy'), false);
+  await page.setViewportSize({ width: 1400, height: 900 });
+  assert.deepEqual(errors, []);
+});
+
+test('the video panel shows a placement\'s cost slice with the drawn offset among the cheapest', async () => {
+  const { page, errors } = demo;
+  await page.setViewportSize({ width: 1280, height: 720 });
+  await page.click('button[data-panel="video"]');
+  await page.fill('#vt-size', '32');
+  await page.fill('#vt-frames', '16');
+  await page.selectOption('#vt-mode', 'extend');
+  await page.selectOption('#vt-placement', 'matching');
+  await page.fill('#vt-fixed', '0');
+  await page.dispatchEvent('#vt-fixed', 'change');
+  await page.check('#vt-anatomy-on');
+  assert.equal(await page.isVisible('#gc-anatomy'), true);
+  const ranks = [];
+  for (let n = 1; n <= 6; n++) {
+    await page.click('#step');
+    await page.waitForSelector(`body[data-video-anatomy-patches="${n}"]`);
+    // The first patch is placed at random: nothing is covered to match against.
+    const legend = await page.$eval('#gc-cost-legend', (e) => ({ ...e.dataset }));
+    if (n === 1) {
+      assert.equal(legend.offsets, undefined, 'no cost surface for the first patch');
+      assert.match(await page.textContent('#vt-anatomy-slice'), /No cost surface/);
+      continue;
+    }
+    assert.ok(Number(legend.offsets) > 20, `${legend.offsets} candidate offsets in the slice`);
+    assert.ok(Number(legend.chosenProbability) > 0, 'the drawn offset had a chance');
+    ranks.push(Number(legend.chosenRank));
+    assert.match(await page.textContent('#vt-anatomy-slice'), /spatial offsets .* at the drawn time shift t = -?\d+ · graph: frame \d+/);
+    assert.match(await page.textContent('#vt-explain'), /spatio-temporal patch.*section 7/s);
+    assert.ok(Number(await page.getAttribute('#gc-graph', 'data-cut-pixels')) > 5, 'a seam is drawn in the slice');
+  }
+  // With k = 0.01, eq. 3 draws from the cheapest few per cent of the offsets at its time shift.
+  assert.ok(Math.max(...ranks) < 0.05, `ranks of the drawn offsets: ${ranks}`);
+  const cyan = await page.$eval('#gc-cost', (c) => {
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] < 120 && d[i + 1] > 180 && d[i + 2] > 200) n++;
+    return n;
+  });
+  assert.ok(cyan > 10, `${cyan} marker pixels`);
+  await page.hover('#gc-graph');
+  assert.match(await page.textContent('#gc-graph-readout'), /pixel \(\d+, \d+\): .*arc right/);
+  await page.screenshot({ path: `${RESULTS}/anatomy-video.png`, fullPage: false });
+  await page.screenshot({ path: `${RESULTS}/anatomy-video-full.png`, fullPage: true });
+  await page.setViewportSize({ width: 1400, height: 900 });
+  assert.deepEqual(errors, []);
+});

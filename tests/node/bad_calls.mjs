@@ -186,6 +186,34 @@ export const BAD_CALLS = [
   ['renderOffsetMap: short', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).renderOffsetMap(new Uint8ClampedArray(4)), /target pixel array|step/],
   ['FlowAnimation.flowField: t huge', () => new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] }).flowField(2 ** 32 - 1), { either: 'flow' }],
   ['FlowAnimation.renderNaiveInto: short', () => new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] }).renderNaiveInto(new Uint8ClampedArray(1)), 'target pixel array'],
+  // Step anatomy of flow animation and placement anatomy of video (issue 16).
+  ['FlowAnimation.renderWarpedInto: in frame 1', () => new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] }).renderWarpedInto(new Uint8ClampedArray(8 * 8 * 4)), 'renderWarpedInto'],
+  ['FlowAnimation.renderWarpedInto: short, in frame 2', () => {
+    const flow = new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 3, frameSizes: [4], frameIterations: 1 });
+    while (flow.framesFinished < 1) flow.step();
+    flow.step();
+    flow.renderWarpedInto(new Uint8ClampedArray(3));
+  }, 'target pixel array'],
+  ['FlowAnimation.renderWarpedInto: null', () => new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] }).renderWarpedInto(null), /target|renderWarpedInto/],
+  ['FlowAnimation.field: before any step is null', () => {
+    const field = new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] }).field();
+    if (field !== null) throw new Error(`field() before a step returned ${field}`);
+  }, OK],
+  ['FlowAnimation.field: on a freed session', () => {
+    const flow = new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] });
+    flow.free();
+    flow.field();
+  }, 'null pointer passed to rust'],
+  ['VideoTextures.placementGraph: before setAnatomy is null', () => {
+    const video = new api.VideoTextures(tinyClip(), { fixedFrames: 2, transitionWindow: 4 });
+    video.step();
+    if (video.placementGraph() !== null || video.placementCosts() !== null) throw new Error('recorded without setAnatomy');
+  }, OK],
+  ['VideoTextures.placementCosts: on a freed session', () => {
+    const video = new api.VideoTextures(tinyClip(), {});
+    video.free();
+    video.placementCosts();
+  }, 'null pointer passed to rust'],
   // Objects of the wrong class where an Exemplar belongs.
   ['a FeatureMap as an Exemplar', () => new api.TextureOptimization(api.detectFeatures(ex(), {}), {}), /Exemplar/],
   ['a plain object as an Exemplar', () => new api.GraphcutTextures({ width: 8, height: 8 }, {}), /Exemplar/],

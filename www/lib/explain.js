@@ -66,6 +66,14 @@ export const EXPLANATIONS = {
     text: 'A flow frame: the warped previous frame is both the start and a soft constraint, weighted by λ in the flow energy (3); the texture energy keeps it looking like the exemplar. The naive view beside it only warps, and smears.',
     cite: [KWATRA_2005, 'section 4.1, equation (3), and section 4 (soft constraints, equation (2))', 'the paragraph "We perform synthesis in a frame-by-frame fashion..."'],
   },
+  'fl-e-step': {
+    text: 'E-step of a flow frame: with the z_p fixed, each pixel becomes a weighted average of the matched neighbourhoods that overlap it and of the warped previous frame, weighted by λ (the flow energy (3), treated as the soft constraint of (2)). Compare "after the E-step" with the warped target beside it: the texture pulls one way, the flow the other.',
+    cite: [KWATRA_2005, 'section 4.1, equation (3), with section 4 (the E-step of soft-constrained synthesis)', 'the paragraphs "We perform synthesis in a frame-by-frame fashion..." and "In the E-step, we solve a new system of linear equations..."'],
+  },
+  'fl-m-step': {
+    text: 'M-step of a flow frame: each grid node takes the exemplar neighbourhood z_p nearest to the frame, searched from its match in the previous frame carried along the flow (Algorithm 2). An M-step changes no pixel; shown is what it chose, pasted where the nodes are.',
+    cite: [KWATRA_2005, 'section 4.1 and Algorithm 2', 'the paragraph "We perform synthesis in a frame-by-frame fashion..." and the M-step of section 4 ("We also modify the M-step that estimates {z_p}...")'],
+  },
   'fg-features': {
     text: 'Feature-guided synthesis: each new patch is chosen by its feature cost (curvilinear features matched in position and orientation, section 2.1) plus 0.5 × its colour difference, bent by a thin-plate spline so its features meet those placed (section 2.2), then cut in with a graph-cut seam.',
     cite: [WU_YU_2004, 'sections 2.1-2.3 and 3', 'the section "3 Feature-Guided Texture Synthesis"'],
@@ -77,6 +85,14 @@ export const EXPLANATIONS = {
   'vt-start': {
     text: 'Video textures: the graph is over voxels (x, y, t) and a patch is a spatio-temporal block of the clip; a loop needs only a seam in time, found by the same minimum cut.',
     cite: [KWATRA_2003, 'section 7, Video Synthesis', 'the section "7 Video Synthesis"'],
+  },
+  'vt-place': {
+    text: 'A spatio-temporal patch: its offset (x, y, t) is drawn with probability exp(−C/(kσ²)) from the costs C of every translation that covers the error region, one 3-D FFT search (equation (4), section 5); its seam is a surface, the minimum cut of a graph over 6-connected voxels. Shown: the costs at the drawn time shift, and the graph in the frame of the patch with the most overlap.',
+    cite: [KWATRA_2003, 'section 7 (C. Spatio-Temporally Stationary Videos), section 4 (sub-patch matching, equations (3) and (4)) and section 5 (FFT-based acceleration)', 'the paragraphs "C. Spatio-Temporally Stationary Videos..." and "Sub-patch matching: This is the most general of all our patch selection techniques..."'],
+  },
+  'vt-place-random': {
+    text: 'A spatio-temporal patch at a random offset (section 7, B. Random Temporal Offsets, or a random spatial one): there is no cost surface to show, only its seam surface, the minimum cut of a graph over 6-connected voxels, shown in the frame of the patch with the most overlap.',
+    cite: [KWATRA_2003, 'section 7 (B. Random Temporal Offsets) and section 3 (the graph, Figure 2)', 'the paragraph "B. Random Temporal Offsets: For very short sequences of video..."'],
   },
   'ds-deform': {
     text: 'Global deformation: the texture is rotated, scaled, mirrored or flipped as a whole, then re-synthesised by energy optimization so that it stays seamless.',

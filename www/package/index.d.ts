@@ -447,6 +447,21 @@ export class FlowAnimation implements Steppable<FlowAnimationEvent> {
   flowField(t: number): Float32Array;
   textureEnergyHistory(): Float64Array;
   flowEnergyHistory(): Float64Array;
+  /**
+   * Step anatomy (as `TextureOptimization.setHalfSteps`): every step ends after one half of an
+   * EM iteration, in frame 1's synthesis and in every later frame; the frames are the same.
+   */
+  setHalfSteps(on: boolean): void;
+  /**
+   * The grid and matches the last step worked on (frame 1's level, then the frame level last
+   * iterated); null before the first step and from frame 1's end until frame 2 iterates.
+   */
+  field(): NeighbourhoodField | null;
+  /**
+   * The previous frame warped along the flow (eq. 3's constraint target), alpha 0 where the
+   * warp had no source. @throws {TexsynthError} during frame 1, which has none.
+   */
+  renderWarpedInto(target: RgbaTarget): void;
   readonly done: boolean;
   readonly frames: number;
   readonly framesFinished: number;
@@ -787,6 +802,16 @@ export class VideoTextures implements Steppable<VideoTexturesEvent> {
   sliceXt(y: number): Uint8Array;
   /** The frame the last patch reached into (frame 0 before the first step), as RGBA. */
   renderInto(rgba: Bytes): void;
+  /** Records one slice of each placement's cost surface and graph (for `placementCosts`, `placementGraph`). */
+  setAnatomy(on: boolean): void;
+  /**
+   * The last placement's costs over one slice of the 3-D offsets: spatial offsets at the drawn
+   * time shift `tt` (axes 'xy'), or temporal offsets as a row (axes 't', 7.B); null unless
+   * recorded, and for placements drawn without matching.
+   */
+  placementCosts(): (PlacementCosts & { axes: 'xy' | 't'; tt: number }) | null;
+  /** The last placement's seam graph in one frame of the patch (`frame`: the one with the most overlap); null unless recorded. */
+  placementGraph(): (PlacementGraph & { frame: number; firstFrame: number; frames: number }) | null;
 }
 
 /** Curve ends per 1000 curve pixels in the output's feature map minus the exemplar's (lower is better). */

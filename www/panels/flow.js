@@ -2,13 +2,19 @@
 // after frame so that it moves along a flow field. The main canvas shows each EM iteration of the
 // frame being made; the side shows the finished frames playing in a loop, the naive warp of the
 // first frame for comparison (the paper's Fig. 7), the flow as arrows, and the per-frame
-// energies. "Record WebM" plays the finished frames through the browser's MediaRecorder.
+// energies. "Record WebM" plays the finished frames through the browser's MediaRecorder. The step
+// anatomy (the texture-optimization panel's, optimization-anatomy.js) splits each EM iteration of
+// a frame into its E-step and M-step and shows them beside the warped previous frame, the soft
+// constraint that makes a frame follow the flow.
 import { flowField } from '../pkg/texsynth.js';
 import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
 import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
 import { recordToLink } from '../lib/record.js';
+import {
+  stepAnatomyHtml, describeNode, drawCollage, drawMatches, drawWeights, nodeAt, outlineNode,
+} from './optimization-anatomy.js';
 
 export const id = 'flow';
 export const title = 'Flow animation';
@@ -36,12 +42,27 @@ const OPTIONS_HTML = `
   <label title="pixels per frame at half the frame's shorter side">strength <input id="fl-strength" type="number" value="2" min="0" max="16" step="0.5"></label>
   <label title="weight of the flow term: higher follows the flow more closely, lower keeps the texture sharper">λ <input id="fl-lambda" type="number" value="0.2" min="0" max="100" step="0.05"></label>
   <label>frames <input id="fl-frames" type="number" value="60" min="2" max="600" step="1"></label>
+  <label title="stop after each half of an EM iteration: the E-step's frame, then the M-step's matches, beside the warped previous frame"><input id="fl-anatomy-on" class="view" type="checkbox"> step anatomy</label>
   <button id="fl-record" type="button" class="view">Record WebM</button>
   <a id="fl-download" hidden download="texsynth-flow.webm">download video</a>`;
+
+/** The flow panel's part of the step anatomy: the three images one iteration is about. */
+const WARPED_HTML = `
+    <h3>One iteration of a frame <small>section 4.1, eq. 3</small></h3>
+    <div class="side-row anatomy-triple">
+      <figure><canvas id="fl-warped" width="96" height="96" aria-label="Previous frame warped along the flow"></canvas>
+        <figcaption>previous frame, warped: the target</figcaption></figure>
+      <figure><canvas id="fl-e-step" width="96" height="96" aria-label="Frame after the last E-step"></canvas>
+        <figcaption>after the E-step</figcaption></figure>
+      <figure><canvas id="fl-m-step" width="96" height="96" aria-label="Neighbourhoods the last M-step chose"></canvas>
+        <figcaption>the M-step's z<sub>p</sub></figcaption></figure>
+    </div>
+    <p class="legend" id="fl-warped-legend">Frame 1 is plain texture optimization: no previous frame yet.</p>`;
 
 const SIDE_HTML = `
   <div class="readout" id="fl-readout">press Run or Step (frames of 128×128 run live; 256×256 at a few per second)</div>
   <div class="explain" id="fl-explain" data-history-text aria-live="polite"></div>
+  ${stepAnatomyHtml(WARPED_HTML)}
   <div class="side-row">
     <figure><canvas id="fl-playback" width="128" height="128" aria-label="Finished frames, playing"></canvas>
       <figcaption>finished frames, looping</figcaption></figure>
@@ -76,24 +97,93 @@ export function createPanel(ui) {
     };
   }
 
-  const VIEWS = {
-    views: ['renderInto', 'renderNaiveInto'],
-    calls: ['textureEnergyHistory', 'flowEnergyHistory'],
-    getters: ['frames'],
-  };
+  const anatomyOn = () => ui.$('fl-anatomy-on').checked;
+  // The last event, the half it completed and the hovered grid node (step anatomy).
+  let lastEvent = null;
+  let lastHalf = null;
+  let hoveredNode = -1;
+  // The warped previous frame exists from the step that begins frame 2 (frame index 1) on.
+  const warpedAfter = (event) => !!event && (event.frame > 0 || event.frameFinished);
+
+  /** What the worker sends back with each step: the anatomy's field and warped frame when on. */
+  function views() {
+    const anatomy = anatomyOn();
+    return {
+      views: ['renderInto', 'renderNaiveInto', ...(anatomy && warpedAfter(lastEvent) ? ['renderWarpedInto'] : [])],
+      calls: ['textureEnergyHistory', 'flowEnergyHistory', ...(anatomy ? ['field'] : [])],
+      getters: ['frames'],
+    };
+  }
 
   async function ensureSession() {
-    pending ??= remoteSession('FlowAnimation', [ui.exemplar(), options()], VIEWS);
+    pending ??= remoteSession('FlowAnimation', [ui.exemplar(), options()], views);
     const current = pending;
     try {
       const created = await current;
       if (pending !== current) return null;
+      if (session !== created && anatomyOn()) await created.send('setHalfSteps', true);
       session = created;
       return session;
     } catch (error) {
       if (pending === current) pending = null;
       throw error;
     }
+  }
+
+  /** The main canvas: the frame; with the anatomy on, after an M-step the z_p it chose pasted in
+   * place (an M-step changes no pixel, so the frame alone would not show what it did). */
+  function drawMain() {
+    const canvas = ui.outputCanvas;
+    const field = session.result('field');
+    if (!anatomyOn() || !field || lastHalf === 'e-step') drawInto(canvas, session);
+    else drawCollage(canvas, field, ui.$('exemplar-canvas'), session.width, session.height);
+    if (anatomyOn() && field && hoveredNode >= 0 && hoveredNode < field.columns.length * field.rows.length) {
+      outlineNode(canvas, field, hoveredNode);
+    }
+  }
+
+  /** The anatomy's side views: warped target, E-step frame, M-step collage, matches, weights. */
+  function drawAnatomy() {
+    const field = session?.result('field');
+    if (!anatomyOn() || !field) return;
+    if (lastHalf === 'e-step') drawInto(ui.$('fl-e-step'), session);
+    else drawCollage(ui.$('fl-m-step'), field, ui.$('exemplar-canvas'), session.width, session.height);
+    if (session.has('renderWarpedInto')) {
+      drawInto(ui.$('fl-warped'), {
+        width: session.width,
+        height: session.height,
+        renderInto: (data) => session.view('renderWarpedInto', data),
+      });
+      ui.$('fl-warped-legend').textContent =
+        `Frame ${lastEvent.frame + 1}: each E-step averages the matched neighbourhoods with this target, ` +
+        `weighted by λ (eq. 3); checkered where the flow brought nothing in.`;
+    }
+    drawMatches(ui.$('to-matches'), field, ui.$('exemplar-canvas'), hoveredNode);
+    ui.$('to-weights').dataset.nodes = String(drawWeights(ui.$('to-weights'), field).nodes);
+    if (hoveredNode >= 0) ui.$('to-node-readout').textContent = describeNode(field, hoveredNode);
+  }
+
+  function hover(event) {
+    const field = session?.result('field');
+    if (!anatomyOn() || !field) return;
+    const rect = ui.outputCanvas.getBoundingClientRect();
+    const x = ((event.clientX - rect.left) / rect.width) * session.width;
+    const y = ((event.clientY - rect.top) / rect.height) * session.height;
+    const node = nodeAt(field, x, y, session.width, session.height);
+    if (node === hoveredNode) return;
+    hoveredNode = node;
+    drawMain();
+    drawAnatomy();
+  }
+
+  /** Half steps from the next step on; the field (and warped frame) fetched if missing. */
+  async function toggleAnatomy() {
+    ui.$('to-anatomy').hidden = !anatomyOn();
+    if (!session) return;
+    await session.send('setHalfSteps', anatomyOn());
+    if (anatomyOn()) await session.refresh();
+    drawMain();
+    drawAnatomy();
   }
 
   /** The flow f_t as arrows on a grid (the field's own scale: one arrow per cell). */
@@ -173,9 +263,12 @@ export function createPanel(ui) {
     mount() {
       ui.$('fl-record').addEventListener('click', record);
       for (const id of ['fl-flow', 'fl-strength']) ui.$(id).addEventListener('change', () => drawArrows());
+      ui.$('fl-anatomy-on').addEventListener('change', toggleAnatomy);
+      ui.outputCanvas.onpointermove = hover;
       startPlayback();
     },
     unmount() {
+      ui.outputCanvas.onpointermove = null;
       clearInterval(playTimer);
       playTimer = null;
     },
@@ -186,7 +279,13 @@ export function createPanel(ui) {
       return current === session ? event : null; // reset while the step ran
     },
     onStep(event) {
-      drawInto(ui.outputCanvas, session);
+      lastEvent = event;
+      lastHalf = event.kind === 'part' && event.phase !== 'm-step' ? event.phase : 'm-step';
+      document.body.dataset.flowHalf = lastHalf;
+      document.body.dataset.flowFrame = String(event.frame);
+      document.body.dataset.flowSteps = String(Number(document.body.dataset.flowSteps ?? 0) + 1);
+      drawMain();
+      drawAnatomy();
       drawInto(ui.$('fl-naive'), {
         width: session.width,
         height: session.height,
@@ -209,7 +308,11 @@ export function createPanel(ui) {
         : `frame ${event.frame + 1}/${session.getter('frames')} · neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration}${part}`;
       ui.$('fl-readout').textContent =
         `${what} · texture energy ${event.textureEnergy.toPrecision(3)} · flow energy ${event.flowEnergy.toPrecision(3)}`;
-      explain(ui.$('fl-explain'), event.frame === 0 ? 'fl-first' : 'fl-frame');
+      // With the anatomy on, a later frame's halves have their own text (section 4.1, eq. 3).
+      const half = anatomyOn() && event.frame > 0 && !event.frameFinished
+        ? (lastHalf === 'e-step' ? 'fl-e-step' : 'fl-m-step')
+        : null;
+      explain(ui.$('fl-explain'), half ?? (event.frame === 0 ? 'fl-first' : 'fl-frame'));
       if (event.done) document.body.dataset.flowDone = 'true';
     },
     reset() {
@@ -218,7 +321,19 @@ export function createPanel(ui) {
       session = null;
       frames = [];
       playIndex = 0;
+      lastEvent = null;
+      lastHalf = null;
+      hoveredNode = -1;
+      ui.$('to-anatomy').hidden = !anatomyOn();
+      ui.$('fl-warped-legend').textContent = 'Frame 1 is plain texture optimization: no previous frame yet.';
+      for (const id of ['fl-warped', 'fl-e-step', 'fl-m-step']) {
+        const c = ui.$(id);
+        c.getContext('2d').clearRect(0, 0, c.width, c.height);
+      }
       delete document.body.dataset.flowDone;
+      delete document.body.dataset.flowHalf;
+      delete document.body.dataset.flowFrame;
+      document.body.dataset.flowSteps = '0';
       delete document.body.dataset.recordedBytes;
       document.body.dataset.flowFrames = '0';
       ui.$('fl-readout').textContent = 'press Run or Step (frames of 128×128 run live; 256×256 at a few per second)';

@@ -4,12 +4,17 @@
 // nearest exemplar neighbourhood z_p of every grid node, pasted where the node is. Beside it: the
 // z_p drawn on the exemplar in the colour of the node they serve, and the IRLS weights
 // ||x_p - z_p||^(r-2) as a heat map. The data is the session's field() (grid, matches,
-// distances, weights).
+// distances, weights). The flow panel shows the same views for the EM iterations of its frames
+// (section 4.1), with the warped previous frame they are pulled towards first.
 
 import { heat, paintGrid } from '../lib/heat.js';
 
-export const STEP_ANATOMY_HTML = `
-  <section class="anatomy" id="to-anatomy" hidden aria-label="Step anatomy">
+/**
+ * The step anatomy's side views; `before` is markup a panel puts first in the section (the flow
+ * panel's warped previous frame, the constraint target its E-steps are pulled towards).
+ */
+export const stepAnatomyHtml = (before = '') => `
+  <section class="anatomy" id="to-anatomy" hidden aria-label="Step anatomy">${before}
     <h3>Chosen neighbourhoods z<sub>p</sub> on the exemplar</h3>
     <canvas id="to-matches" class="anatomy-graph" width="296" height="296" aria-label="Matched exemplar neighbourhoods"></canvas>
     <p class="legend">Each square is the z<sub>p</sub> of one grid node, in the colour of where that node sits on the
@@ -20,6 +25,8 @@ export const STEP_ANATOMY_HTML = `
       weights quiet down (r &lt; 2).</p>
     <p class="readout" id="to-node-readout" aria-live="polite">hover the output for a node</p>
   </section>`;
+
+export const STEP_ANATOMY_HTML = stepAnatomyHtml();
 
 /** Colour of the node in column i of `columns`, row j of `rows`: hue across, lightness down. */
 function nodeColour(i, columns, j, rows) {

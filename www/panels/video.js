@@ -4,11 +4,14 @@
 // surface, and the page shows the frame the patch landed in with the seam drawn over it, an x-t
 // slice through the volume where the seams show where in time the cut falls, and the loop point
 // with the frames on either side of it. When the synthesis is done the output plays in a loop and
-// can be recorded as WebM.
+// can be recorded as WebM. The placement anatomy is the graph-cut panel's (graphcut-anatomy.js)
+// for one slice of the 3-D placement: the costs over spatial offsets at the drawn time shift, and
+// the seam graph in the frame of the patch with the most overlap (see src/methods/video/anatomy.rs).
 import { clipFromImages, clipFromStrip, clipFromVideo, loadImage } from '../lib/video-input.js';
 import { recordToLink } from '../lib/record.js';
 import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
+import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
 
 export const id = 'video';
 export const title = 'Video textures';
@@ -36,12 +39,17 @@ const OPTIONS_HTML = `
   <label title="output frames (offsets and extension; a loop is as long as its transition); 0: the default">out frames <input id="vt-out-frames" type="number" value="0" min="0" max="480" step="1"></label>
   <label title="frames held fixed at both ends of a spatial extension so that it loops (7.D); 0: no loop">k <input id="vt-fixed" type="number" value="10" min="0" max="60" step="1"></label>
   <label class="views" title="the row the x-t slice is taken at">slice row <input id="vt-row" class="view" type="range" min="0" max="63" value="32"></label>
+  <label title="the cost surface (at the drawn time shift) and the seam graph (in one frame) of each placement"><input id="vt-anatomy-on" class="view" type="checkbox"> placement anatomy</label>
   <button id="vt-record" type="button" class="view">Record WebM</button>
   <a id="vt-download" hidden download="texsynth-video.webm">download video</a>`;
 
 const SIDE_HTML = `
   <div class="readout" id="vt-readout">press Run or Step</div>
   <div class="explain" id="vt-explain" data-history-text aria-live="polite"></div>
+  ${ANATOMY_HTML
+    .replace('aria-label="Placement anatomy">', 'aria-label="Placement anatomy">\n    <p class="legend" id="vt-anatomy-slice"></p>')
+    .replace('C(t), eq. 2', 'C(t), eq. 4, one time shift')
+    .replace('section 3, 3.1</small>', 'sections 3, 3.1, 7; one frame</small>')}
   <div class="side-row">
     <figure><canvas id="vt-playback" width="128" height="128" style="width: 128px; image-rendering: pixelated" aria-label="Output, playing"></canvas>
       <figcaption id="vt-playback-caption">output, looping</figcaption></figure>
@@ -56,7 +64,8 @@ const SIDE_HTML = `
     <figure><canvas id="vt-loop-first" width="64" height="64" style="width: 128px; image-rendering: pixelated" aria-label="Frame after the loop point"></canvas>
       <figcaption>after it</figcaption></figure>
   </div>
-  <p class="legend" id="vt-loop-caption">The loop point and the frames on either side of it.</p>`;
+  <p class="legend" id="vt-loop-caption">The loop point and the frames on either side of it.</p>
+`;
 
 export function createPanel(ui) {
   let clip = null;
@@ -69,6 +78,45 @@ export function createPanel(ui) {
   let playIndex = 0;
   let recording = false;
   let shownFrame = 0;
+
+  const anatomyOn = () => ui.$('vt-anatomy-on').checked;
+  /** What the worker sends back with each step: the placement's anatomy while it is on. */
+  const wanted = () => ({ getters: ['frames'], calls: anatomyOn() ? ['placementCosts', 'placementGraph'] : [] });
+
+  /** The anatomy is recorded from the next placement on (the session keeps nothing otherwise). */
+  async function toggleAnatomy() {
+    ui.$('gc-anatomy').hidden = !anatomyOn();
+    if (session) await session.send('setAnatomy', anatomyOn());
+    if (anatomyOn()) {
+      ui.$('gc-graph-readout').textContent = session ? 'recorded from the next placement on: press Step' : 'press Run or Step';
+    }
+  }
+
+  /** Draws the last placement's slices; a placement without costs (random, the first patch,
+   * a loop's copies, 7.D's fixed frames) leaves the cost maps blank and says why. */
+  function drawAnatomy(event) {
+    if (!anatomyOn()) return;
+    const costs = session.result('placementCosts');
+    const graph = session.result('placementGraph');
+    showPlacementAnatomy(ui.$, costs, graph);
+    if (!costs) {
+      for (const id of ['gc-cost', 'gc-probability']) {
+        const c = ui.$(id);
+        c.getContext('2d').clearRect(0, 0, c.width, c.height);
+      }
+      delete ui.$('gc-cost-legend').dataset.offsets;
+    }
+    const where = costs
+      ? (costs.axes === 'xy'
+        ? `Costs over spatial offsets x ${costs.x}…${costs.x + costs.width - 1}, y ${costs.y}…${costs.y + costs.height - 1} at the drawn time shift t = ${costs.tt}`
+        : `Costs over temporal offsets t ${costs.x}…${costs.x + costs.width - 1} (7.B: no spatial shift)`)
+      : 'No cost surface: this patch was placed without matching (random placement, the first patch, a loop or 7.D’s fixed frames)';
+    const frame = graph
+      ? ` · graph: frame ${graph.frame + 1} of the patch’s frames ${graph.firstFrame + 1}–${graph.firstFrame + graph.frames}, the one with the most overlap`
+      : '';
+    ui.$('vt-anatomy-slice').textContent = `${where}${frame}.`;
+    document.body.dataset.videoAnatomyPatches = String(event.patch + 1);
+  }
 
   const size = () => Math.min(256, Math.max(16, Math.round(Number(ui.$('vt-size').value) || 64)));
   const frameCount = () => Math.min(240, Math.max(4, Math.round(Number(ui.$('vt-frames').value) || 40)));
@@ -138,12 +186,13 @@ export function createPanel(ui) {
     pending ??= (async () => {
       const c = await loadClip();
       const wire = { clip: { width: c.width, height: c.height, frames: c.frames, rgba: c.rgba } };
-      return remoteSession('VideoTextures', [wire, options()], { getters: ['frames'] });
+      return remoteSession('VideoTextures', [wire, options()], wanted);
     })();
     const current = pending;
     try {
       const created = await current;
       if (pending !== current) return null;
+      if (session !== created && anatomyOn()) await created.send('setAnatomy', true);
       session = created;
       return session;
     } catch (error) {
@@ -242,6 +291,7 @@ export function createPanel(ui) {
     sideHtml: SIDE_HTML,
     mount() {
       ui.$('vt-record').addEventListener('click', record);
+      ui.$('vt-anatomy-on').addEventListener('change', toggleAnatomy);
       ui.$('vt-row').addEventListener('input', () => drawSlice().catch(() => {}));
       ui.$('vt-source').addEventListener('change', () => {
         if (ui.$('vt-source').value === 'file') ui.$('vt-file').click();
@@ -277,6 +327,8 @@ export function createPanel(ui) {
         `cut cost ${event.cutCost.toPrecision(3)}${event.covered ? ' · refining' : ''} · showing frame ${t + 1}/${frames}`;
       await drawFrame(t);
       await drawSlice();
+      drawAnatomy(event);
+      explain(ui.$('vt-explain'), !anatomyOn() ? 'vt-start' : session.result('placementCosts') ? 'vt-place' : 'vt-place-random');
       document.body.dataset.videoPatches = String(event.patch + 1);
       if (event.done) {
         await drawLoopPoint(event.loopFrame ?? -1);
@@ -295,6 +347,8 @@ export function createPanel(ui) {
       document.body.dataset.videoPatches = '0';
       ui.$('vt-readout').textContent = 'press Run or Step';
       explain(ui.$('vt-explain'), 'vt-start');
+      ui.$('gc-anatomy').hidden = !anatomyOn();
+      delete document.body.dataset.videoAnatomyPatches;
       ui.$('vt-download').hidden = true;
       for (const id of ['vt-playback', 'vt-slice', 'vt-loop-last', 'vt-loop-first']) {
         const c = ui.$(id);

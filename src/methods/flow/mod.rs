@@ -10,6 +10,8 @@ pub mod session;
 pub mod warp;
 
 #[cfg(test)]
+mod anatomy_tests;
+#[cfg(test)]
 mod tests;
 
 pub use field::FlowField;

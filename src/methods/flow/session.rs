@@ -11,6 +11,8 @@ use crate::core::{Edge, Error, Image, Result, Rng};
 use crate::methods::optimization::constraints::Constraint;
 use crate::methods::optimization::iteration::{Iteration, Phase, StepBudget, Work};
 use crate::methods::optimization::level::{LevelSetup, LevelSolver};
+use crate::methods::optimization::schedule::Level;
+use crate::methods::optimization::teaching::{self, Field};
 use crate::methods::optimization::{self, EventKind};
 
 /// PatchMatch sweeps per M-step within a frame: the matches arrive carried along the flow, so
@@ -94,6 +96,9 @@ pub struct FlowSession {
     constraint: Option<Constraint>,
     /// The naive baseline of Fig. 7: frame 0 warped along the flow, frame after frame.
     naive: Option<Image>,
+    /// The index in `solvers` of the level solver the last frame step iterated (None before a
+    /// frame after the first has iterated): whose grid and matches the step anatomy shows.
+    iterated: Option<usize>,
     field: Option<FlowField>,
     history: Vec<FrameEnergy>,
     total_iterations: usize,
@@ -177,6 +182,7 @@ impl FlowSession {
             previous: None,
             constraint: None,
             naive: None,
+            iterated: None,
             field: None,
             history: Vec::new(),
             total_iterations: 0,
@@ -266,10 +272,64 @@ impl FlowSession {
     /// [`SPLIT_PIXELS`](optimization::iteration::SPLIT_PIXELS)), and the work between looks at
     /// the clock, for frame 0's synthesis too. Where iterations split changes no output.
     pub fn set_step_budget(&mut self, milliseconds: Option<f64>, chunk_work: usize) {
-        self.budget = StepBudget::new(milliseconds, chunk_work);
+        // The step anatomy's halves are a separate switch: a new budget keeps it.
+        self.budget = StepBudget {
+            halves: self.budget.halves,
+            ..StepBudget::new(milliseconds, chunk_work)
+        };
         if let Some(first) = &mut self.first {
             first.set_step_budget(milliseconds, chunk_work);
         }
+    }
+
+    /// Makes every step end after one half of an EM iteration (the page's step anatomy, as
+    /// [`optimization::Session::set_half_steps`]): frame 0's synthesis and every later frame
+    /// stop after the first M-step on the warped start, after each E-step and after each M-step.
+    /// No output changes.
+    pub fn set_half_steps(&mut self, on: bool) {
+        self.budget.halves = on;
+        if let Some(first) = &mut self.first {
+            first.set_half_steps(on);
+        }
+    }
+
+    /// The neighbourhood grid X-dagger and matches z_p of the level solver the last step
+    /// iterated, with that solver (for its distances): frame 0's current level while it runs,
+    /// then the frame level last iterated. None before the first step, and from the step that
+    /// finishes frame 0 until frame 1 iterates (frame 0's levels are gone, the frame levels not
+    /// yet matched).
+    #[must_use]
+    pub fn anatomy_field(&self) -> Option<(Field<'_>, &LevelSolver)> {
+        if let Some(first) = &self.first {
+            return Some((teaching::field(first)?, first.level_solver()?));
+        }
+        let solver = &self.solvers[self.iterated?];
+        let setup = solver.setup();
+        let (columns, rows) = solver.grid();
+        let level = Level {
+            octave: 0,
+            output_width: setup.output_width,
+            output_height: setup.output_height,
+            exemplar_width: self.exemplar.width(),
+            exemplar_height: self.exemplar.height(),
+            size: setup.size,
+            spacing: setup.spacing,
+        };
+        let field = Field {
+            level,
+            columns,
+            rows,
+            matches: solver.matches(),
+        };
+        Some((field, solver))
+    }
+
+    /// The previous frame carried along the flow: the target of eq. 3's soft constraint and the
+    /// start of the current frame's synthesis, with its mask (1 where the warp's source lies
+    /// inside the frame). None during frame 0, which has no previous frame.
+    #[must_use]
+    pub fn warped_previous(&self) -> Option<&Constraint> {
+        self.constraint.as_ref()
     }
 
     /// Runs one EM iteration and reports it; on a large frame, part of one (the event's kind
@@ -401,6 +461,7 @@ impl FlowSession {
                 return Ok(self.part_event());
             }
         }
+        self.iterated = Some(self.size_index);
         let solver = &mut self.solvers[self.size_index];
         let output = self.current.as_mut().expect("frame begun");
         if self.run.idle() {
@@ -452,7 +513,13 @@ impl FlowSession {
     fn part_event(&self) -> FlowEvent {
         let solver = &self.solvers[self.size_index];
         let pixels = self.options.output_width * self.options.output_height;
-        let (phase, progress) = self.run.progress(solver, pixels);
+        // A step that completed a half (step anatomy) reports that half whole, with the shares
+        // the optimisation session gives it.
+        let (phase, progress) = match self.run.completed {
+            Some(Phase::FirstMatch) => (Phase::FirstMatch, 0.2),
+            Some(Phase::EStep) => (Phase::EStep, 0.4),
+            _ => self.run.progress(solver, pixels),
+        };
         let last = self.last.expect("frame 0 stepped before");
         FlowEvent {
             kind: FlowEventKind::Part,

@@ -39,6 +39,23 @@ impl CostSurface {
         anchor: (i64, i64),
         wrap: Option<(usize, usize)>,
     ) -> Option<CostSurface> {
+        let offsets: Vec<((i32, i32), f32)> = scored
+            .iter()
+            .map(|c| ((c.patch.tx, c.patch.ty), c.cost))
+            .collect();
+        CostSurface::from_offsets(&offsets, chosen, temperature, anchor, wrap)
+    }
+
+    /// The same from plain (offset, cost) pairs: for placements whose candidates are not image
+    /// patches (a slice of video's spatio-temporal offsets, [`crate::methods::video::anatomy`]).
+    #[must_use]
+    pub fn from_offsets(
+        scored: &[((i32, i32), f32)],
+        chosen: Option<(i32, i32)>,
+        temperature: f64,
+        anchor: (i64, i64),
+        wrap: Option<(usize, usize)>,
+    ) -> Option<CostSurface> {
         let unwrap = |t: i32, a: i64, len: Option<usize>| -> i64 {
             let t = i64::from(t);
             match len {
@@ -54,17 +71,14 @@ impl CostSurface {
                 unwrap(ty, anchor.1, wrap.map(|w| w.1)),
             )
         };
-        let points: Vec<(i64, i64)> = scored
-            .iter()
-            .map(|c| place(c.patch.tx, c.patch.ty))
-            .collect();
+        let points: Vec<(i64, i64)> = scored.iter().map(|&((tx, ty), _)| place(tx, ty)).collect();
         let x0 = points.iter().map(|p| p.0).min()?;
         let y0 = points.iter().map(|p| p.1).min()?;
         let width = (points.iter().map(|p| p.0).max()? - x0 + 1) as usize;
         let height = (points.iter().map(|p| p.1).max()? - y0 + 1) as usize;
         let mut cost = vec![f32::INFINITY; width * height];
         let mut probability = vec![0.0f32; width * height];
-        let best = scored.iter().map(|c| c.cost).fold(f32::INFINITY, f32::min);
+        let best = scored.iter().map(|c| c.1).fold(f32::INFINITY, f32::min);
         // As `choose` draws: relative to the best cost, uniform when no cost is finite.
         let weight = |c: f32| -> f64 {
             if !best.is_finite() {
@@ -75,11 +89,11 @@ impl CostSurface {
                 0.0
             }
         };
-        let total: f64 = scored.iter().map(|c| weight(c.cost)).sum();
-        for (candidate, &(x, y)) in scored.iter().zip(&points) {
+        let total: f64 = scored.iter().map(|c| weight(c.1)).sum();
+        for (&(_, c), &(x, y)) in scored.iter().zip(&points) {
             let k = (y - y0) as usize * width + (x - x0) as usize;
-            cost[k] = cost[k].min(candidate.cost);
-            probability[k] += (weight(candidate.cost) / total.max(f64::MIN_POSITIVE)) as f32;
+            cost[k] = cost[k].min(c);
+            probability[k] += (weight(c) / total.max(f64::MIN_POSITIVE)) as f32;
         }
         let chosen = chosen.map(|(tx, ty)| {
             let (x, y) = place(tx, ty);
@@ -147,10 +161,12 @@ impl GraphView {
         graph: &SeamGraph,
         origin: (i64, i64),
         (width, height): (usize, usize),
-        local: impl Fn(usize) -> Option<usize>,
-        next: impl Fn(usize, usize) -> Option<usize>,
+        local: &dyn Fn(usize) -> Option<usize>,
+        next: &dyn Fn(usize, usize) -> Option<usize>,
         taken: &[usize],
     ) -> GraphView {
+        // Dynamic closures: one copy of this teaching-only code serves images and video (the
+        // .wasm size budget), at no cost that matters for a view built once per placement.
         let n = width * height;
         let mut view = GraphView {
             x: origin.0,

@@ -70,8 +70,8 @@ impl Synthesis {
                 &graph,
                 (i64::from(patch.tx), i64::from(patch.ty)),
                 (pw, ph),
-                local,
-                |i, axis| self.next(i, axis),
+                &local,
+                &|i, axis| self.next(i, axis),
                 &taken,
             )
         });

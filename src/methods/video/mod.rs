@@ -11,6 +11,7 @@
 //! - `session`: phases, including 7.D's constrained first and last k frames;
 //! - `teaching`: per-frame seam overlay and x-t slice.
 
+pub mod anatomy;
 pub mod budget;
 pub mod canvas;
 pub mod options;
@@ -24,6 +25,8 @@ pub mod teaching;
 pub mod transition;
 pub mod volume;
 
+#[cfg(test)]
+mod anatomy_tests;
 #[cfg(test)]
 mod tests;
 

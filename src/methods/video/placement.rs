@@ -242,11 +242,27 @@ impl Synthesis {
         allowed: Allowed,
         used: &HashSet<Patch>,
         rng: &mut Rng,
-        (k, sigma): (f32, f32),
+        k_sigma: (f32, f32),
     ) -> Result<Option<Patch>> {
+        let scored = self.score_offsets(region, allowed, used)?;
+        Ok(draw_offset(&scored, k_sigma, rng))
+    }
+
+    /// Every unused offset covering `region` with its cost C(t) (eq. 4 / eq. 2, infinite where
+    /// the search does not reach); the costs are None while nothing in the region is covered
+    /// (nothing to match: the draw is uniform).
+    pub fn score_offsets(
+        &self,
+        region: Region,
+        allowed: Allowed,
+        used: &HashSet<Patch>,
+    ) -> Result<Scored> {
         let candidates = self.candidates(region, allowed, used);
         if candidates.is_empty() {
-            return Ok(None);
+            return Ok(Scored {
+                candidates,
+                costs: None,
+            });
         }
         let (w, h, _) = self.canvas.size();
         let (rw, rh, rd) = region.size;
@@ -267,7 +283,10 @@ impl Synthesis {
             }
         }
         if weights.iter().all(|&w| w == 0.0) {
-            return Ok(Some(candidates[rng.index(candidates.len())]));
+            return Ok(Scored {
+                candidates,
+                costs: None,
+            });
         }
         let source = &self.sources[allowed.source as usize].volume;
         let map = volume_ssd_map(
@@ -302,27 +321,49 @@ impl Synthesis {
                 }
             })
             .collect();
-        let best = costs.iter().copied().fold(f64::INFINITY, f64::min);
-        if !best.is_finite() {
-            return Ok(Some(candidates[rng.index(candidates.len())]));
-        }
-        let scale = f64::from(k) * f64::from(sigma).powi(2);
-        let weights: Vec<f64> = costs
-            .iter()
-            .map(|c| crate::core::math::exp(-(c - best) / scale))
-            .collect();
-        let mut pick = rng.next_f64() * weights.iter().sum::<f64>();
-        for (p, w) in candidates.iter().zip(&weights) {
-            if pick < *w {
-                return Ok(Some(*p));
-            }
-            pick -= w;
-        }
-        Ok(candidates
-            .iter()
-            .zip(&weights)
-            .rev()
-            .find(|(_, w)| **w > 0.0)
-            .map(|(p, _)| *p))
+        Ok(Scored {
+            candidates,
+            costs: Some(costs),
+        })
     }
+}
+
+/// The unused offsets a matching placement considered, with their costs (None: uniform).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scored {
+    pub candidates: Vec<Patch>,
+    pub costs: Option<Vec<f64>>,
+}
+
+/// Draws an offset of `scored` with probability exp(-(C - C_min) / (k sigma^2)) (eq. 3),
+/// uniformly where no cost is known or finite; None when there is no candidate.
+pub fn draw_offset(scored: &Scored, (k, sigma): (f32, f32), rng: &mut Rng) -> Option<Patch> {
+    let candidates = &scored.candidates;
+    if candidates.is_empty() {
+        return None;
+    }
+    let best = scored.costs.as_ref().map_or(f64::INFINITY, |c| {
+        c.iter().copied().fold(f64::INFINITY, f64::min)
+    });
+    let (Some(costs), true) = (&scored.costs, best.is_finite()) else {
+        return Some(candidates[rng.index(candidates.len())]);
+    };
+    let scale = f64::from(k) * f64::from(sigma).powi(2);
+    let weights: Vec<f64> = costs
+        .iter()
+        .map(|c| crate::core::math::exp(-(c - best) / scale))
+        .collect();
+    let mut pick = rng.next_f64() * weights.iter().sum::<f64>();
+    for (p, w) in candidates.iter().zip(&weights) {
+        if pick < *w {
+            return Some(*p);
+        }
+        pick -= w;
+    }
+    candidates
+        .iter()
+        .zip(&weights)
+        .rev()
+        .find(|(_, w)| **w > 0.0)
+        .map(|(p, _)| *p)
 }

@@ -52,7 +52,11 @@ impl Synthesis {
 
     /// Places `patch` with the seam surface the graph cut chooses.
     pub fn place(&mut self, patch: Patch, force_new: &[usize]) -> Result<Placed> {
-        let (cut_cost, taken) = self.seam_graph(patch, force_new).solve()?;
+        let graph = self.seam_graph(patch, force_new);
+        let (cut_cost, taken) = graph.solve()?;
+        self.last_graph = self
+            .record_anatomy
+            .then(|| self.graph_slice(&graph, patch, &taken));
         let index = self.canvas.patches.len();
         self.canvas.patches.push(patch);
         self.take(index, patch, &taken);

@@ -12,10 +12,11 @@
 
 use std::collections::HashSet;
 
+use super::anatomy::{CostSlice, GraphSlice, cost_slice};
 use super::budget::WorkingSet;
 use super::canvas::{Canvas, Patch, UNCOVERED};
 use super::options::{Mode, Options, Placement};
-use super::placement::{Allowed, Region, region_around};
+use super::placement::{Allowed, Region, draw_offset, region_around};
 use super::source::Source;
 use super::synthesis::Synthesis;
 use super::transition::{Transition, best_transition, half_window};
@@ -70,6 +71,8 @@ pub struct Session {
     fixed: usize,
     refinements: usize,
     last: Option<Event>,
+    /// The last placement's cost slice, while the anatomy is recorded.
+    last_costs: Option<CostSlice>,
 }
 
 impl Session {
@@ -114,6 +117,7 @@ impl Session {
                     fixed: 0,
                     refinements: 0,
                     last: None,
+                    last_costs: None,
                 })
             }
             Mode::Offsets | Mode::Extend => {
@@ -155,6 +159,7 @@ impl Session {
                     fixed: k,
                     refinements: 0,
                     last: None,
+                    last_costs: None,
                 })
             }
         }
@@ -226,11 +231,48 @@ impl Session {
         }
     }
 
+    /// Records (or stops recording) each placement's cost slice and graph slice for the page's
+    /// placement anatomy (see [`super::anatomy`]); off by default.
+    pub fn set_anatomy(&mut self, on: bool) {
+        self.synthesis.record_anatomy = on;
+        if !on {
+            self.last_costs = None;
+            self.synthesis.last_graph = None;
+        }
+    }
+
+    /// The last placement's cost slice: recorded while the anatomy is on, for placements drawn
+    /// by matching (7.C) over a region with covered voxels; random ones have no costs.
+    #[must_use]
+    pub fn placement_costs(&self) -> Option<&CostSlice> {
+        self.last_costs.as_ref()
+    }
+
+    /// The last placement's graph slice (recorded while the anatomy is on).
+    #[must_use]
+    pub fn placement_graph(&self) -> Option<&GraphSlice> {
+        self.synthesis.last_graph.as_ref()
+    }
+
+    /// The output frame (as events number them) of canvas frame `t`: a loop's canvas starts one
+    /// frame early, 7.D's first k canvas frames are removed (negative: one of them).
+    #[must_use]
+    pub fn output_frame(&self, t: i64) -> i64 {
+        if self.transition.is_some() {
+            t - 1
+        } else {
+            t - self.fixed as i64
+        }
+    }
+
     /// Places one patch.
     pub fn step(&mut self) -> Result<Event> {
         if self.phase == Phase::Done {
             return Ok(self.last.expect("a finished session has stepped"));
         }
+        // Each placement records its own anatomy (a random one has no cost surface).
+        self.last_costs = None;
+        self.synthesis.last_graph = None;
         let placed = match self.phase {
             Phase::LoopA => {
                 let patch = Patch {
@@ -274,11 +316,8 @@ impl Session {
             loop_frame: None,
         };
         if let Some(p) = placed {
-            event.offset = (p.patch.tx, p.patch.ty, p.patch.tt - self.fixed as i32);
-            if self.transition.is_some() {
-                // In output frames: canvas frame f is loop frame f - 1.
-                event.offset.2 = p.patch.tt - 1;
-            }
+            let tt = self.output_frame(i64::from(p.patch.tt)) as i32;
+            event.offset = (p.patch.tx, p.patch.ty, tt);
             event.voxels_taken = p.voxels_taken;
             event.cut_cost = p.cut_cost;
         }
@@ -394,13 +433,17 @@ impl Session {
                 s.covering_offset(region, allowed, &self.used, &mut self.rng, COVERING_DRAWS)
             }
             Placement::Random => s.random_offset(region, allowed, &self.used, &mut self.rng),
-            Placement::Matching => s.matching_offset(
-                region,
-                allowed,
-                &self.used,
-                &mut self.rng,
-                (self.options.k, self.sigma),
-            )?,
+            Placement::Matching => {
+                let scored = s.score_offsets(region, allowed, &self.used)?;
+                let k_sigma = (self.options.k, self.sigma);
+                let chosen = draw_offset(&scored, k_sigma, &mut self.rng);
+                if s.record_anatomy {
+                    let temperature = f64::from(k_sigma.0) * f64::from(k_sigma.1).powi(2);
+                    self.last_costs =
+                        chosen.and_then(|p| cost_slice(&scored, p, allowed.spatial, temperature));
+                }
+                chosen
+            }
         };
         let Some(patch) = chosen else {
             self.phase = Phase::Done;

@@ -12,6 +12,10 @@ pub struct Synthesis {
     pub canvas: Canvas,
     /// Use M' (eq. 5, divided by the gradients along the edge) instead of M (eq. 1).
     pub gradient_cost: bool,
+    /// Whether placements keep a frame of their graph for the page's placement anatomy, and the
+    /// last one kept.
+    pub record_anatomy: bool,
+    pub last_graph: Option<super::anatomy::GraphSlice>,
 }
 
 impl Synthesis {
@@ -21,6 +25,8 @@ impl Synthesis {
             sources,
             canvas,
             gradient_cost,
+            record_anatomy: false,
+            last_graph: None,
         }
     }
 
