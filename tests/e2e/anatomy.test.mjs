@@ -128,8 +128,16 @@ test('feature-guided graph-cut placements show their anatomy too', async () => {
   }
   const legend = await page.$eval('#gc-cost-legend', (e) => ({ ...e.dataset }));
   assert.ok(Number(legend.offsets) > 50, `${legend.offsets} candidate offsets`);
+  // The probabilities are the draw's: over the 64 best offsets by colour (featureCandidates),
+  // by colour plus feature cost, not graph cut's over every offset.
+  const drawable = Number(legend.drawable);
+  assert.ok(drawable >= 1 && drawable <= 64 && drawable < Number(legend.offsets), `${drawable} drawable of ${legend.offsets}`);
+  assert.ok(Number(legend.chosenProbability) > 0, 'the drawn offset could be drawn');
   assert.ok(Number(await page.getAttribute('#gc-graph', 'data-cut-pixels')) > 10, 'a seam is drawn');
   assert.match(await page.textContent('#gc-anatomy h3'), /feature cost re-ranks/);
+  assert.match(await page.textContent('#gc-cost-legend'), /best offsets by colour, from colour plus feature cost/);
+  // Graph-cut placement draws no warp, and its explanation says so (the scan placement's does).
+  assert.match(await page.textContent('#fg-explain'), /No warp here/);
   await page.screenshot({ path: `${RESULTS}/anatomy-features.png`, fullPage: true });
   assert.deepEqual(errors, []);
 });

@@ -78,6 +78,10 @@ export const EXPLANATIONS = {
     text: 'Feature-guided synthesis: each new patch is chosen by its feature cost (curvilinear features matched in position and orientation, section 2.1) plus 0.5 × its colour difference, bent by a thin-plate spline so its features meet those placed (section 2.2), then cut in with a graph-cut seam.',
     cite: [WU_YU_2004, 'sections 2.1-2.3 and 3', 'the section "3 Feature-Guided Texture Synthesis"'],
   },
+  'fg-hybrid': {
+    text: 'Feature-guided graph-cut placement (the default): the whole exemplar is the patch, placed over graph cut\'s error region. The best offsets by colour are re-ranked by colour plus the feature cost (curvilinear features matched in position and orientation, section 2.1; weight 0.5, section 3) and one is drawn by eq. 3; the seam also pays where it would end a curve. No warp here: the thin-plate spline of section 2.2 bends the patches of the scan placement.',
+    cite: [WU_YU_2004, 'sections 2.1 and 3, with Kwatra et al. 2003 sections 3-4', 'the section "3 Feature-Guided Texture Synthesis"'],
+  },
   'fg-graphcut': {
     text: 'The same exemplar and seed through plain graph cut, for comparison: count where features end at a seam (broken features, lower is better).',
     cite: [KWATRA_2003, 'section 4, entire patch matching', 'the paragraph on entire patch matching'],

@@ -23,7 +23,7 @@ const OPTIONS_HTML = `
   <label title="patch side (the paper: 32 to 64)">patch <input id="fg-patch" type="number" value="64" min="16" max="128"></label>
   <label title="bend each patch so its features meet the placed ones (section 2.2)"><input id="fg-warp" type="checkbox" checked> warp</label>
   <label><input id="fg-compare" type="checkbox" checked> compare with graph cut</label>
-  <label title="graph-cut placement: each placement's colour-cost surface, probabilities and seam graph"><input id="fg-anatomy-on" type="checkbox"> placement anatomy</label>
+  <label title="graph-cut placement: each placement's colour-cost surface, the probabilities it was drawn by (colour plus feature cost) and its seam graph"><input id="fg-anatomy-on" type="checkbox"> placement anatomy</label>
   <span class="views">exemplar map:
     <label><input type="radio" name="fg-brush" class="view" value="off" checked> view</label>
     <label><input type="radio" name="fg-brush" class="view" value="paint"> paint</label>
@@ -41,7 +41,9 @@ const SIDE_HTML = `
   <p class="legend">On the output: the patch (white), its context region (yellow), each correspondence as a line
   from where the partner feature lay to where the warp moved it (cyan), and the warp as a deformed grid.
   Feature colours give the orientation bucket.</p>
-  ${ANATOMY_HTML.replace('C(t), eq. 2', 'colour cost C(t), eq. 2; the feature cost re-ranks its best')}`;
+  ${ANATOMY_HTML.replace('C(t), eq. 2', 'colour cost C(t), eq. 2; the feature cost re-ranks its best')
+    .replace('Right: the chance eq. 3 gives each (bright: likely).',
+      'Right: the chance eq. 3 gives each of the best offsets by colour, from colour plus feature cost (section 3; the rest cannot be drawn).')}`;
 
 export function createPanel(ui) {
   let map = null;
@@ -52,6 +54,8 @@ export function createPanel(ui) {
   let painting = false;
   // With the placement anatomy on (graph-cut placement), each step also brings back the
   // placement's cost surface and seam graph (recorded by the session only when asked).
+  // The scan placement warps its patches (section 2.2); graph-cut placement does not.
+  const featuresKey = () => (ui.$('fg-placement').value === 'graphcut' ? 'fg-hybrid' : 'fg-features');
   const anatomyOn = () => ui.$('fg-anatomy-on').checked && ui.$('fg-placement').value === 'graphcut';
   const FEATURE_VIEWS = () => ({
     views: ['renderInto', 'renderFeatures'],
@@ -237,7 +241,7 @@ export function createPanel(ui) {
       return { ...event, phase: 'graphcut' };
     },
     onStep(event) {
-      explain(ui.$('fg-explain'), event.phase === 'features' ? 'fg-features' : 'fg-graphcut');
+      explain(ui.$('fg-explain'), event.phase === 'features' ? featuresKey() : 'fg-graphcut');
       if (event.phase === 'features') {
         zoomCanvas();
         drawPlacement();
@@ -277,7 +281,7 @@ export function createPanel(ui) {
       }
       const readout = ui.$('fg-readout');
       if (readout) readout.textContent = 'press Run or Step';
-      explain(ui.$('fg-explain'), 'fg-features');
+      explain(ui.$('fg-explain'), featuresKey());
       if (ui.$('fg-quality')) ui.$('fg-quality').textContent = '';
     },
   };

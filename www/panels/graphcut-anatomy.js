@@ -63,6 +63,8 @@ export function drawCosts(costCanvas, probabilityCanvas, c) {
     // Share of offsets cheaper than the one drawn: 0 when the cheapest was drawn.
     chosenRank: finite.filter((v) => v < chosen).length / finite.length,
     chosenProbability: c.chosenX >= 0 ? probability[c.chosenY * width + c.chosenX] : 0,
+    // Offsets eq. 3 could draw (feature-guided placement draws among the best by colour only).
+    drawable: Array.from(probability).filter((p) => p > 0).length,
   };
 }
 
@@ -134,6 +136,7 @@ export function showPlacementAnatomy($, surface, graph) {
     const f = drawCosts($('gc-cost'), $('gc-probability'), surface);
     Object.assign($('gc-cost-legend').dataset, {
       chosenRank: String(f.chosenRank), chosenProbability: String(f.chosenProbability), offsets: String(f.offsets),
+      drawable: String(f.drawable),
     });
   }
   if (graph) {

@@ -13,6 +13,7 @@ use super::matching::{FeatureIndex, TAU_MATCH};
 use crate::core::{Image, Result, math};
 use crate::methods::graphcut::canvas::{Patch, UNCOVERED};
 use crate::methods::graphcut::placement::Candidate;
+use crate::methods::graphcut::session::Drawn;
 use crate::methods::graphcut::source::Source;
 use crate::methods::graphcut::synthesis::Synthesis;
 use crate::methods::graphcut::{Event, Options, Session};
@@ -127,7 +128,8 @@ pub fn frontier(s: &Synthesis, band: usize) -> Vec<bool> {
 
 /// Scores the candidates of one graph-cut step by colour SSD plus feature cost and draws one
 /// (eq. 3 of graph-cut textures on the combined cost). `keep` candidates, the best by colour,
-/// get the feature cost; the rest are dropped.
+/// get the feature cost; the rest are dropped. Also returns the candidates drawn from with their
+/// combined costs, where they are not `scored` itself.
 pub fn choose(
     s: &mut Synthesis,
     features: &mut [SourceFeatures],
@@ -135,20 +137,21 @@ pub fn choose(
     feature_weight: f32,
     keep: usize,
     band: usize,
-) -> Option<Choice> {
+) -> Option<(Choice, Option<Vec<Candidate>>)> {
     if scored.is_empty() {
         return None;
     }
     let (w, h) = (s.canvas.width, s.canvas.height);
     if s.canvas.covered == 0 {
         let patch = s.choose(scored)?;
-        return Some(Choice {
+        let choice = Choice {
             patch,
             feature_cost: 0.0,
             colour_cost: 0.0,
             context_features: 0,
             colour_only: false,
-        });
+        };
+        return Some((choice, None));
     }
     let (mask, angle) = canvas_features(s, features);
     let near = frontier(s, band);
@@ -159,13 +162,14 @@ pub fn choose(
         .filter(|c| c.cost.is_finite())
         .collect();
     if best.is_empty() {
-        return s.choose(scored).map(|patch| Choice {
+        let choice = |patch| Choice {
             patch,
             feature_cost: 0.0,
             colour_cost: 0.0,
             context_features: 0,
             colour_only: true,
-        });
+        };
+        return s.choose(scored).map(|patch| (choice(patch), None));
     }
     let keep = keep.clamp(1, best.len());
     best.select_nth_unstable_by(keep - 1, |a, b| a.cost.total_cmp(&b.cost));
@@ -241,13 +245,14 @@ pub fn choose(
         .collect();
     let patch = s.choose(&combined)?;
     let k = best.iter().position(|c| c.patch == patch)?;
-    Some(Choice {
+    let choice = Choice {
         patch,
         feature_cost: costs[k].0,
         colour_cost: best[k].cost,
         context_features: costs[k].1,
         colour_only,
-    })
+    };
+    Some((choice, Some(combined)))
 }
 
 /// The feature-guided choices of graph-cut placement.
@@ -339,9 +344,12 @@ impl GraphcutFeatures {
         let o = self.options;
         let mut last = None;
         let event = self.session.step_with(|s, scored| {
-            let c = choose(s, features, scored, o.feature_weight, o.candidates, o.band)?;
+            let (c, pool) = choose(s, features, scored, o.feature_weight, o.candidates, o.band)?;
             last = Some(c);
-            Some(c.patch)
+            Some(Drawn {
+                patch: c.patch,
+                pool,
+            })
         })?;
         self.last = last;
         Ok(event)
@@ -452,5 +460,41 @@ mod tests {
                 assert_eq!(near[y * 96 + x], close, "({x}, {y})");
             }
         }
+    }
+
+    /// The placement anatomy of a feature-guided step shows what eq. 3 drew from: the best
+    /// candidates by colour with their combined costs, not graph cut's draw over every offset.
+    #[test]
+    fn the_anatomy_draws_over_the_pool_feature_guided_placement_drew_from() {
+        let ex = sample("tiles_64");
+        let map = detect(&ex, DetectOptions::default()).unwrap();
+        let options = Options {
+            output_width: 112,
+            output_height: 96,
+            ..Options::default()
+        };
+        let hybrid = HybridOptions {
+            feature_weight: 0.5,
+            candidates: 12,
+            band: 8,
+            seam_feature_weight: 1.0,
+        };
+        let mut g = GraphcutFeatures::new(&ex, vec![map], Vec::new(), options, hybrid).unwrap();
+        for _ in 0..2 {
+            g.step().unwrap();
+        }
+        g.session.set_anatomy(true);
+        g.step().unwrap();
+        let choice = g.last.expect("a feature-guided choice");
+        assert!(!choice.colour_only, "tiles have oriented features");
+        let surface = g.session.placement_costs().expect("recorded");
+        let finite = surface.cost.iter().filter(|c| c.is_finite()).count();
+        let drawable = surface.probability.iter().filter(|&&p| p > 0.0).count();
+        let total: f32 = surface.probability.iter().sum();
+        assert!(finite > 12, "{finite} offsets scored");
+        assert!((1..=12).contains(&drawable), "{drawable} offsets drawable");
+        assert!((total - 1.0).abs() < 1e-4, "{total}");
+        let (cx, cy) = surface.chosen.expect("marked");
+        assert!(surface.probability[cy * surface.width + cx] > 0.0);
     }
 }

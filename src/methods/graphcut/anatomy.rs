@@ -27,23 +27,64 @@ pub struct CostSurface {
     pub temperature: f64,
 }
 
+/// Where a candidate's offset goes on the surface. `wrap` is the output size when it wraps:
+/// offsets were reduced modulo it, so each is put back next to the region (`anchor`, the
+/// region's top-left corner).
+#[derive(Clone, Copy)]
+struct Placing {
+    anchor: (i64, i64),
+    wrap: Option<(usize, usize)>,
+}
+
+impl Placing {
+    fn at(self, tx: i32, ty: i32) -> (i64, i64) {
+        let unwrap = |t: i32, a: i64, len: Option<usize>| -> i64 {
+            let t = i64::from(t);
+            match len {
+                // The candidate's unreduced offset is the one at most one output size before the
+                // region's corner.
+                Some(n) => a - (a - t).rem_euclid(n as i64),
+                None => t,
+            }
+        };
+        (
+            unwrap(tx, self.anchor.0, self.wrap.map(|w| w.0)),
+            unwrap(ty, self.anchor.1, self.wrap.map(|w| w.1)),
+        )
+    }
+}
+
 impl CostSurface {
     /// The surface of `scored` (candidates with their costs), with `chosen` marked. `wrap` is
     /// the output size when it wraps: offsets were reduced modulo it, so each is put back next
     /// to the region (`anchor`, the region's top-left corner).
     #[must_use]
+    ///
+    /// `drawn`: the candidates eq. 3 actually drew from, with the costs it drew by, when they
+    /// are not `scored` (feature-guided placement draws among the best by colour, by colour
+    /// plus feature cost); the probabilities are then theirs, and 0 elsewhere.
     pub fn new(
         scored: &[Candidate],
+        drawn: Option<&[Candidate]>,
         chosen: Option<(i32, i32)>,
         temperature: f64,
         anchor: (i64, i64),
         wrap: Option<(usize, usize)>,
     ) -> Option<CostSurface> {
-        let offsets: Vec<((i32, i32), f32)> = scored
-            .iter()
-            .map(|c| ((c.patch.tx, c.patch.ty), c.cost))
-            .collect();
-        CostSurface::from_offsets(&offsets, chosen, temperature, anchor, wrap)
+        let offsets = |c: &[Candidate]| -> Vec<((i32, i32), f32)> {
+            c.iter()
+                .map(|c| ((c.patch.tx, c.patch.ty), c.cost))
+                .collect()
+        };
+        let drawn = drawn.map(offsets);
+        let place = Placing { anchor, wrap };
+        CostSurface::placed(
+            &offsets(scored),
+            drawn.as_deref(),
+            chosen,
+            temperature,
+            place,
+        )
     }
 
     /// The same from plain (offset, cost) pairs: for placements whose candidates are not image
@@ -56,21 +97,18 @@ impl CostSurface {
         anchor: (i64, i64),
         wrap: Option<(usize, usize)>,
     ) -> Option<CostSurface> {
-        let unwrap = |t: i32, a: i64, len: Option<usize>| -> i64 {
-            let t = i64::from(t);
-            match len {
-                // The candidate's unreduced offset is the one at most one output size before the
-                // region's corner.
-                Some(n) => a - (a - t).rem_euclid(n as i64),
-                None => t,
-            }
-        };
-        let place = |tx: i32, ty: i32| {
-            (
-                unwrap(tx, anchor.0, wrap.map(|w| w.0)),
-                unwrap(ty, anchor.1, wrap.map(|w| w.1)),
-            )
-        };
+        let place = Placing { anchor, wrap };
+        CostSurface::placed(scored, None, chosen, temperature, place)
+    }
+
+    fn placed(
+        scored: &[((i32, i32), f32)],
+        drawn: Option<&[((i32, i32), f32)]>,
+        chosen: Option<(i32, i32)>,
+        temperature: f64,
+        placing: Placing,
+    ) -> Option<CostSurface> {
+        let place = |tx: i32, ty: i32| placing.at(tx, ty);
         let points: Vec<(i64, i64)> = scored.iter().map(|&((tx, ty), _)| place(tx, ty)).collect();
         let x0 = points.iter().map(|p| p.0).min()?;
         let y0 = points.iter().map(|p| p.1).min()?;
@@ -78,7 +116,12 @@ impl CostSurface {
         let height = (points.iter().map(|p| p.1).max()? - y0 + 1) as usize;
         let mut cost = vec![f32::INFINITY; width * height];
         let mut probability = vec![0.0f32; width * height];
-        let best = scored.iter().map(|c| c.1).fold(f32::INFINITY, f32::min);
+        for (&(_, c), &(x, y)) in scored.iter().zip(&points) {
+            let k = (y - y0) as usize * width + (x - x0) as usize;
+            cost[k] = cost[k].min(c);
+        }
+        let pool = drawn.unwrap_or(scored);
+        let best = pool.iter().map(|c| c.1).fold(f32::INFINITY, f32::min);
         // As `choose` draws: relative to the best cost, uniform when no cost is finite.
         let weight = |c: f32| -> f64 {
             if !best.is_finite() {
@@ -89,10 +132,10 @@ impl CostSurface {
                 0.0
             }
         };
-        let total: f64 = scored.iter().map(|c| weight(c.1)).sum();
-        for (&(_, c), &(x, y)) in scored.iter().zip(&points) {
+        let total: f64 = pool.iter().map(|c| weight(c.1)).sum();
+        for &((tx, ty), c) in pool {
+            let (x, y) = place(tx, ty);
             let k = (y - y0) as usize * width + (x - x0) as usize;
-            cost[k] = cost[k].min(c);
             probability[k] += (weight(c) / total.max(f64::MIN_POSITIVE)) as f32;
         }
         let chosen = chosen.map(|(tx, ty)| {

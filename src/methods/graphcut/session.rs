@@ -5,7 +5,7 @@
 use super::anatomy::{CostSurface, GraphView};
 use super::canvas::Patch;
 use super::options::{Blend, Options};
-use super::placement::Region;
+use super::placement::{Candidate, Region};
 use super::synthesis::Synthesis;
 use crate::core::{Image, Result};
 
@@ -26,6 +26,20 @@ pub struct Event {
     pub covered: bool,
     pub total_seam_cost: f64,
     pub patches_placed: usize,
+}
+
+/// The patch a placement choice drew, and what it drew from when that was not the scored
+/// candidates with their own costs (feature-guided placement draws among the best by colour, by
+/// colour plus feature cost): the placement anatomy shows eq. 3's probabilities over these.
+pub struct Drawn {
+    pub patch: Patch,
+    pub pool: Option<Vec<Candidate>>,
+}
+
+impl From<Patch> for Drawn {
+    fn from(patch: Patch) -> Drawn {
+        Drawn { patch, pool: None }
+    }
 }
 
 /// A running graph-cut synthesis.
@@ -109,14 +123,14 @@ impl Session {
 
     /// Places one patch.
     pub fn step(&mut self) -> Result<Event> {
-        self.step_with(|s, scored| s.choose(scored))
+        self.step_with(|s, scored| s.choose(scored).map(Drawn::from))
     }
 
     /// Places one patch, chosen among the scored candidates by `choose` instead of eq. 3 alone
     /// (feature-guided placement adds its own cost). `None` ends the session.
     pub fn step_with(
         &mut self,
-        choose: impl FnOnce(&mut Synthesis, &[super::placement::Candidate]) -> Option<Patch>,
+        choose: impl FnOnce(&mut Synthesis, &[Candidate]) -> Option<Drawn>,
     ) -> Result<Event> {
         if self.finished {
             return Ok(self.last.expect("a finished session has stepped"));
@@ -127,7 +141,8 @@ impl Session {
         s.draw_windows();
         let candidates = s.candidates(region);
         let scored = s.score(region, &candidates)?;
-        let chosen = choose(s, &scored);
+        let drawn = choose(s, &scored);
+        let chosen = drawn.as_ref().map(|d| d.patch);
         let mut event = Event {
             done: false,
             patch: chosen,
@@ -146,6 +161,7 @@ impl Session {
             let anchor = (region.x as i64, region.y as i64);
             CostSurface::new(
                 &scored,
+                drawn.and_then(|d| d.pool).as_deref(),
                 chosen.map(|p| (p.tx, p.ty)),
                 temperature,
                 anchor,
