@@ -13,7 +13,7 @@ import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
 import { recordToLink } from '../lib/record.js';
 import {
-  stepAnatomyHtml, describeNode, drawCollage, drawMatches, drawWeights, nodeAt, outlineNode,
+  stepAnatomyHtml, drawCollage, drawSideViews, nodeUnderPointer, outlineNode,
 } from './optimization-anatomy.js';
 
 export const id = 'flow';
@@ -158,18 +158,14 @@ export function createPanel(ui) {
         `Frame ${lastEvent.frame + 1}: each E-step averages the matched neighbourhoods with this target, ` +
         `weighted by λ (eq. 3); checkered where the flow brought nothing in.`;
     }
-    drawMatches(ui.$('to-matches'), field, ui.$('exemplar-canvas'), hoveredNode);
-    ui.$('to-weights').dataset.nodes = String(drawWeights(ui.$('to-weights'), field).nodes);
-    if (hoveredNode >= 0) ui.$('to-node-readout').textContent = describeNode(field, hoveredNode);
+    const views = { matches: ui.$('to-matches'), weights: ui.$('to-weights'), readout: ui.$('to-node-readout') };
+    drawSideViews(views, field, ui.$('exemplar-canvas'), hoveredNode);
   }
 
   function hover(event) {
     const field = session?.result('field');
     if (!anatomyOn() || !field) return;
-    const rect = ui.outputCanvas.getBoundingClientRect();
-    const x = ((event.clientX - rect.left) / rect.width) * session.width;
-    const y = ((event.clientY - rect.top) / rect.height) * session.height;
-    const node = nodeAt(field, x, y, session.width, session.height);
+    const node = nodeUnderPointer(event, ui.outputCanvas, field, session.width, session.height);
     if (node === hoveredNode) return;
     hoveredNode = node;
     drawMain();

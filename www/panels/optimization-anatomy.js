@@ -121,6 +121,24 @@ export function nodeAt(field, x, y, width, height) {
   return nearest(field.rows, ly) * field.columns.length + nearest(field.columns, lx);
 }
 
+/** The grid node under pointer `event` on `canvas`, which shows a `width` x `height` output. */
+export function nodeUnderPointer(event, canvas, field, width, height) {
+  const rect = canvas.getBoundingClientRect();
+  const x = ((event.clientX - rect.left) / rect.width) * width;
+  const y = ((event.clientY - rect.top) / rect.height) * height;
+  return nodeAt(field, x, y, width, height);
+}
+
+/**
+ * The side views of a step: the z_p on the exemplar, the IRLS weights (their node count left on
+ * the weights canvas for tests) and the hovered node's readout.
+ */
+export function drawSideViews({ matches, weights, readout }, field, exemplarCanvas, node) {
+  drawMatches(matches, field, exemplarCanvas, node);
+  weights.dataset.nodes = String(drawWeights(weights, field).nodes);
+  if (node >= 0) readout.textContent = describeNode(field, node);
+}
+
 /** Outlines node `n`'s neighbourhood on the output canvas (drawn at the output's size). */
 export function outlineNode(canvas, field, n) {
   const cols = field.columns.length;

@@ -8,7 +8,7 @@ import { showQuality } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
 import {
-  STEP_ANATOMY_HTML, describeNode, drawCollage, drawMatches, drawWeights, nodeAt, outlineNode,
+  STEP_ANATOMY_HTML, drawCollage, drawSideViews, nodeUnderPointer, outlineNode,
 } from './optimization-anatomy.js';
 
 export const id = 'optimization';
@@ -153,19 +153,15 @@ export function createPanel(ui) {
   function drawAnatomy() {
     const field = session?.result('field');
     if (!anatomyOn() || !field) return;
-    drawMatches(ui.$('to-matches'), field, ui.$('exemplar-canvas'), hoveredNode);
-    const w = drawWeights(ui.$('to-weights'), field);
-    ui.$('to-weights').dataset.nodes = String(w.nodes);
-    if (hoveredNode >= 0) ui.$('to-node-readout').textContent = describeNode(field, hoveredNode);
+    drawSideViews(sideViews(), field, ui.$('exemplar-canvas'), hoveredNode);
   }
+
+  const sideViews = () => ({ matches: ui.$('to-matches'), weights: ui.$('to-weights'), readout: ui.$('to-node-readout') });
 
   function hover(event) {
     const field = session?.result('field');
     if (!anatomyOn() || !field) return;
-    const rect = ui.outputCanvas.getBoundingClientRect();
-    const x = ((event.clientX - rect.left) / rect.width) * session.width;
-    const y = ((event.clientY - rect.top) / rect.height) * session.height;
-    const node = nodeAt(field, x, y, session.width, session.height);
+    const node = nodeUnderPointer(event, ui.outputCanvas, field, session.width, session.height);
     if (node === hoveredNode) return;
     hoveredNode = node;
     draw();

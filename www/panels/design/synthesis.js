@@ -6,7 +6,7 @@ import { drawInto } from '../../lib/canvas.js';
 import { drawLinePlots } from '../../lib/plot.js';
 import { showQuality } from '../../lib/quality.js';
 import { remoteSession } from '../../lib/worker.js';
-import { describeNode, drawCollage, drawMatches, drawWeights, nodeAt, outlineNode } from '../optimization-anatomy.js';
+import { drawCollage, drawSideViews, nodeUnderPointer, outlineNode } from '../optimization-anatomy.js';
 
 export const id = 'synthesis';
 export const title = 'Synthesise';
@@ -38,17 +38,14 @@ export function createStage({ ui, gallery, readout }) {
     if (lastHalf === 'e-step') drawInto(ui.outputCanvas, session);
     else drawCollage(ui.outputCanvas, field, baseCanvas, session.width, session.height);
     if (hovered >= 0 && hovered < field.columns.length * field.rows.length) outlineNode(ui.outputCanvas, field, hovered);
-    drawMatches(ui.$('dsy-matches'), field, baseCanvas, hovered);
-    ui.$('dsy-weights').dataset.nodes = String(drawWeights(ui.$('dsy-weights'), field).nodes);
-    if (hovered >= 0) ui.$('dsy-node').textContent = describeNode(field, hovered);
+    const views = { matches: ui.$('dsy-matches'), weights: ui.$('dsy-weights'), readout: ui.$('dsy-node') };
+    drawSideViews(views, field, baseCanvas, hovered);
   }
 
   function hover(event) {
     const field = session?.result('field');
     if (!anatomyOn() || !field) return;
-    const rect = ui.outputCanvas.getBoundingClientRect();
-    const node = nodeAt(field, ((event.clientX - rect.left) / rect.width) * session.width,
-      ((event.clientY - rect.top) / rect.height) * session.height, session.width, session.height);
+    const node = nodeUnderPointer(event, ui.outputCanvas, field, session.width, session.height);
     if (node !== hovered) {
       hovered = node;
       drawStep();
