@@ -251,9 +251,9 @@ impl GraphView {
                 slot.min(value)
             };
         };
-        // Seam nodes: the builder pushes (s, seam, to_s) then (seam, t, to_t), then its terminal.
-        let mut seam_ends =
-            vec![(usize::MAX, usize::MAX, f32::NAN); graph.nodes - graph.cells.len()];
+        // A seam node's arcs: to its cells s and t; the cheaper of the two is where cutting
+        // through it makes a new seam.
+        let mut through = vec![f32::NAN; graph.seams.len()];
         for &(a, b, c) in &graph.edges {
             match (a < cells, b < cells) {
                 (true, true) => set(
@@ -263,26 +263,19 @@ impl GraphView {
                     c,
                     false,
                 ),
-                (true, false) => {
-                    let end = &mut seam_ends[(b - cells) as usize];
-                    end.0 = graph.cells[a as usize];
-                    end.2 = if end.2.is_nan() { c } else { end.2.min(c) };
-                }
-                (false, true) => {
-                    let end = &mut seam_ends[(a - cells) as usize];
-                    end.1 = graph.cells[b as usize];
-                    end.2 = if end.2.is_nan() { c } else { end.2.min(c) };
+                (true, false) | (false, true) => {
+                    let slot = &mut through[(a.max(b) - cells) as usize];
+                    *slot = if slot.is_nan() { c } else { slot.min(c) };
                 }
                 (false, false) => {}
             }
         }
         for &(node, to_a, to_b) in &graph.terminals {
             if node >= cells {
-                let (s, t, through) = seam_ends[(node - cells) as usize];
-                if s != usize::MAX && t != usize::MAX {
-                    set(&mut view, s, t, through, false);
-                    set(&mut view, s, t, to_b, true);
-                }
+                let k = (node - cells) as usize;
+                let (s, t) = graph.seams[k];
+                set(&mut view, s, t, through[k], false);
+                set(&mut view, s, t, to_b, true);
                 continue;
             }
             let Some(k) = local(graph.cells[node as usize]) else {

@@ -49,6 +49,8 @@ pub struct SeamGraph {
     pub terminals: Vec<(u32, f32, f32)>,
     /// The uncovered cells under the patch: they take B whatever the cut.
     pub uncovered: Vec<usize>,
+    /// The two cells (s, t) an old seam runs between, per seam node (node `cells.len() + k`).
+    pub seams: Vec<(usize, usize)>,
 }
 
 /// Where a placement's cells are: its footprint, and the index of a cell within the patch's box
@@ -118,6 +120,7 @@ impl SeamGraph {
                         g.edges.push((node_of(s), seam, to_s));
                         g.edges.push((seam, node_of(t), to_t));
                         g.terminals.push((seam, 0.0, grid.old_seam(s, axis)));
+                        g.seams.push((s, t));
                     }
                     (Some(a), Some(_)) => {
                         let cost = grid.seam_cost(s, t, axis, a, patch);
