@@ -11,6 +11,7 @@ import { setupInput } from './lib/input.js';
 import { plotLength } from './lib/plot.js';
 import { Runner } from './lib/runner.js';
 import { SAMPLES } from './lib/samples.js';
+import { installKeyboardBrush } from './lib/keyboard-brush.js';
 import { setupTablist } from './lib/tablist.js';
 import { readOptions, readUrlState, urlQuery, writeOptions } from './lib/url-state.js';
 import * as compare from './panels/compare.js';
@@ -206,6 +207,7 @@ async function main() {
     $('methods').append(button);
   }
   syncTabs = setupTablist($('methods'));
+  installKeyboardBrush(document);
   selectPanel(PANELS.find((p) => p.id === wanted.method) ?? PANELS[0]);
   writeOptions($('method-options'), wanted.options);
   $('run').addEventListener('click', () => {

@@ -3,7 +3,7 @@
 // panel has an accessible name (from Chromium's accessibility tree); focus is visible.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openDemo, RESULTS } from './harness.mjs';
+import { canvasPixels, openDemo, RESULTS } from './harness.mjs';
 
 let demo;
 before(async () => {
@@ -113,5 +113,74 @@ test('every control of every panel has an accessible name', async () => {
     }
   }
   assert.deepEqual(unnamed, []);
+  assert.deepEqual(errors, []);
+});
+
+test('keyboard only: a painted stroke of soft constraints pulls the texture toward the paint', async () => {
+  const { page, errors } = demo;
+  await page.click('#tab-optimization');
+  await page.click('button[data-sample="tiles_64"]');
+  await page.waitForSelector('body[data-exemplar="tiles 64×64"]');
+  await page.fill('#out-width', '96');
+  await page.fill('#out-height', '96');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.click('#run');
+  await page.waitForSelector('body[data-optimization-done="true"]', { timeout: 60_000 });
+  const redness = async () => {
+    const px = await canvasPixels(page, 'output-canvas');
+    let sum = 0;
+    for (let y = 40; y < 56; y++) for (let x = 20; x < 76; x++) sum += px[(y * 96 + x) * 4] - px[(y * 96 + x) * 4 + 1];
+    return sum / (16 * 56);
+  };
+  const before = await redness();
+  await page.fill('#to-colour', '#ff0000');
+  // From here on the keyboard only: Space ticks "paint", Tab reaches the canvas.
+  await page.focus('#to-paint');
+  await page.keyboard.press('Space');
+  assert.equal(await page.isChecked('#to-paint'), true);
+  await tabTo(page, '#output-canvas');
+  assert.match(await page.getAttribute('#output-canvas', 'aria-description'), /hold Space to paint/);
+  // The cursor starts in the middle; 18 steps of 1/50 left puts it at 0.14. Three passes along
+  // the middle band with Space held, as the pointer test paints.
+  for (let n = 0; n < 18; n++) await page.keyboard.press('ArrowLeft');
+  assert.equal(await page.getAttribute('#output-canvas', 'data-brush'), '0.14,0.50');
+  await page.keyboard.down(' ');
+  for (const dy of [0, -1, 2]) {
+    if (dy < 0) await page.keyboard.press('ArrowUp');
+    if (dy > 0) for (let n = 0; n < dy; n++) await page.keyboard.press('ArrowDown');
+    const key = dy < 0 ? 'ArrowLeft' : 'ArrowRight';
+    for (let n = 0; n < 36; n++) await page.keyboard.press(key);
+  }
+  assert.equal(await page.isVisible('.brush-ring.painting'), true, 'the cursor shows the stroke');
+  await page.keyboard.up(' ');
+  await page.waitForSelector('body[data-constraints-set="1"]');
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'done', null, { timeout: 60_000 });
+  const after = await redness();
+  assert.ok(after > before + 30, `red minus green in the painted band: ${before.toFixed(1)} -> ${after.toFixed(1)}`);
+  await page.screenshot({ path: `${RESULTS}/keyboard-paint.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});
+
+test('keyboard only: a merge painted with the keyboard completes', async () => {
+  const { page, errors } = demo;
+  await page.click('#tab-merge');
+  await page.click('button[data-sample="tiles_128"]');
+  await page.waitForSelector('body[data-exemplar="tiles 128×128"]');
+  const stroke = async (brush, steps) => {
+    await page.focus(`input[name="mg-brush"][value="${brush}"]`);
+    await page.keyboard.press('Space');
+    await tabTo(page, '#output-canvas');
+    for (let n = 0; n < 25; n++) await page.keyboard.press('ArrowUp');
+    for (let n = 0; n < Math.abs(steps); n++) await page.keyboard.press(steps < 0 ? 'ArrowLeft' : 'ArrowRight');
+    await page.keyboard.down(' ');
+    for (let n = 0; n < 50; n++) await page.keyboard.press('ArrowDown');
+    await page.keyboard.up(' ');
+  };
+  await stroke(1, -3);
+  await stroke(2, 6);
+  await page.focus('#run');
+  await page.keyboard.press('Space');
+  await page.waitForSelector('body[data-merge-done="true"]', { timeout: 30_000 });
+  assert.match(await page.textContent('#mg-readout'), /merged · cut cost/);
   assert.deepEqual(errors, []);
 });

@@ -8,6 +8,7 @@ import { detectFeatures, measureBrokenFeatures } from '../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../lib/canvas.js';
 import { showQuality } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
+import { paintable } from '../lib/keyboard-brush.js';
 import { remoteSession } from '../lib/worker.js';
 import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
 
@@ -195,6 +196,7 @@ export function createPanel(ui) {
       ex.onpointermove = (e) => painting && paintAt(e);
       this.onPointerUp = () => { painting = false; };
       window.addEventListener('pointerup', this.onPointerUp);
+      paintable(ex, 'Edit the feature map');
       ui.$('fg-threshold').addEventListener('input', () => {
         ui.$('fg-threshold-value').textContent = Number(ui.$('fg-threshold').value).toFixed(2);
       });

@@ -5,6 +5,7 @@ import { Exemplar } from '../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../lib/canvas.js';
 import { SAMPLES } from '../lib/samples.js';
 import { explain } from '../lib/explain.js';
+import { paintable, unpaintable } from '../lib/keyboard-brush.js';
 import { remoteSession } from '../lib/worker.js';
 
 export const id = 'merge';
@@ -135,7 +136,9 @@ export function createPanel(ui) {
       const canvas = ui.outputCanvas;
       canvas.onpointerdown = (e) => { painting = true; paintAt(e); };
       canvas.onpointermove = (e) => painting && paintAt(e);
-      window.addEventListener('pointerup', () => { painting = false; });
+      this.onPointerUp = () => { painting = false; };
+      window.addEventListener('pointerup', this.onPointerUp);
+      paintable(canvas, 'Paint which image each pixel must come from');
       ui.$('mg-clear').addEventListener('click', () => { mask?.fill(0); drop(); draw(); });
       ui.$('mg-second').addEventListener('change', async () => { await loadSecond(); layout = null; this.reset(); });
       loadSecond().then(() => this.reset());
@@ -143,6 +146,8 @@ export function createPanel(ui) {
     unmount() {
       const canvas = ui.outputCanvas;
       canvas.onpointerdown = canvas.onpointermove = null;
+      window.removeEventListener('pointerup', this.onPointerUp);
+      unpaintable(canvas);
     },
     async step() {
       if (!second) return null;

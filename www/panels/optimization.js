@@ -6,6 +6,7 @@ import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
 import { showQuality } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
+import { paintable, unpaintable } from '../lib/keyboard-brush.js';
 import { remoteSession } from '../lib/worker.js';
 import {
   STEP_ANATOMY_HTML, drawCollage, drawSideViews, nodeUnderPointer, outlineNode,
@@ -272,6 +273,7 @@ export function createPanel(ui) {
         }
       };
       window.addEventListener('pointerup', this.onPointerUp);
+      paintable(canvas, 'Paint soft constraints (with "paint" checked)');
       ui.$('to-clear-paint').addEventListener('click', () => {
         paint = null;
         if (session) session.send('clearConstraints').then(() => session?.refresh()).then(draw);
@@ -279,6 +281,7 @@ export function createPanel(ui) {
     },
     unmount() {
       ui.outputCanvas.onpointerdown = ui.outputCanvas.onpointermove = null;
+      unpaintable(ui.outputCanvas);
       window.removeEventListener('pointerup', this.onPointerUp);
     },
     async step() {

@@ -4,6 +4,7 @@
 // paste puts it in. Brushing plain background over elements removes them (density control).
 import { TextureBrush } from '../../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../../lib/canvas.js';
+import { paintable, unpaintable } from '../../lib/keyboard-brush.js';
 
 export const id = 'brush';
 export const title = 'Brush';
@@ -116,7 +117,9 @@ export function createStage({ ui, gallery, readout }) {
       ref.onpointermove = (e) => painting && paintAt(e);
       this.onPointerUp = () => { painting = false; };
       window.addEventListener('pointerup', this.onPointerUp);
+      paintable(ref, 'Brush the reference over the elements to move');
       ui.outputCanvas.onclick = placeAt;
+      paintable(ui.outputCanvas, 'Place the brushed elements on the base (Enter)');
       ui.$('db-undo').addEventListener('click', () => {
         brush?.undo();
         document.body.dataset.strokes = String(brush?.undoDepth ?? 0);
@@ -135,6 +138,7 @@ export function createStage({ ui, gallery, readout }) {
     },
     unmount() {
       ui.outputCanvas.onclick = null;
+      unpaintable(ui.outputCanvas);
       window.removeEventListener('pointerup', this.onPointerUp);
       brush?.free();
       brush = null;
