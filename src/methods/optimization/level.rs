@@ -592,6 +592,13 @@ impl LevelSolver {
         }
     }
 
+    /// Whether the matches minimise a wavelet energy (then [`LevelSolver::match_energy`]
+    /// differs from [`LevelSolver::energy`]).
+    #[must_use]
+    pub fn has_wavelet(&self) -> bool {
+        self.wavelet.is_some()
+    }
+
     /// The energy the M-step minimised, normalised like [`LevelSolver::energy`]: with a wavelet
     /// energy, the pixel term plus the weighted wavelet term (eq. 4); otherwise the same as
     /// [`LevelSolver::energy`].

@@ -100,14 +100,17 @@ impl Occurrence {
         let inv_even = if even > 0.0 { 1.0 / even } else { 0.0 };
         // Zero up to an even share of use (the window's sum over the even one), then linear in
         // the excess.
-        let (columns, rows) = ((width + 1).saturating_sub(size), (height + 1).saturating_sub(size));
+        let (columns, rows) = (
+            (width + 1).saturating_sub(size),
+            (height + 1).saturating_sub(size),
+        );
         let mut penalties = Vec::with_capacity(columns * rows);
         for y0 in 0..rows {
             for x0 in 0..columns {
                 let (x1, y1) = (x0 + size, y0 + size);
-                let window = table[y1 * stride + x1] - table[y0 * stride + x1]
-                    - table[y1 * stride + x0]
-                    + table[y0 * stride + x0];
+                let window =
+                    table[y1 * stride + x1] - table[y0 * stride + x1] - table[y1 * stride + x0]
+                        + table[y0 * stride + x0];
                 penalties.push(scale * (window * inv_even - 1.0).max(0.0) as f32);
             }
         }
@@ -165,7 +168,10 @@ mod tests {
                 // 4 matches of 9 pixels over 72: an even window holds 4 * 9 / 72 * 9 = 4.5.
                 let expected = (direct as f64 / 4.5 - 1.0).max(0.0) as f32;
                 let penalty = occ.penalty(Pos::new(zx, zy));
-                assert!((penalty - expected).abs() < 1e-6, "({zx}, {zy}): {penalty} vs {expected}");
+                assert!(
+                    (penalty - expected).abs() < 1e-6,
+                    "({zx}, {zy}): {penalty} vs {expected}"
+                );
             }
         }
     }

@@ -319,7 +319,14 @@ impl Session {
             EventKind::Iteration
         };
         self.iteration += 1;
-        let energy = self.energy();
+        let solver = self.solver.as_ref().expect("level entered");
+        // Without a wavelet energy the two are one sum (a power per node), so it is taken once.
+        let (energy, match_energy) = if solver.has_wavelet() {
+            (solver.energy(), solver.match_energy())
+        } else {
+            let energy = solver.energy();
+            (energy, energy)
+        };
         let level = self.level;
         self.history.push(EnergyPoint { level, energy });
         let lv = self.levels[level];
@@ -331,7 +338,7 @@ impl Session {
             size: lv.size,
             iteration: self.iteration,
             energy,
-            match_energy: self.solver.as_ref().expect("level entered").match_energy(),
+            match_energy,
             changed,
             total_iterations: self.history.len(),
             solver_iterations: self.run.solver_iterations,
@@ -472,11 +479,6 @@ impl Session {
             rng: &mut self.rng,
         };
         Ok(self.run.advance(work, self.budget))
-    }
-
-    /// The texture energy of the last M-step (see [`LevelSolver::energy`]).
-    fn energy(&self) -> f64 {
-        self.solver.as_ref().expect("level entered").energy()
     }
 
     /// The soft-constraint energy of the current output (0 without constraints): the mean
