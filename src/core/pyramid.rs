@@ -16,31 +16,38 @@ pub fn half_size(len: usize) -> usize {
 /// Blurs with the 5-tap binomial kernel, separably.
 pub fn blur(image: &Image, edge: Edge) -> Image {
     let (w, h, c) = (image.width(), image.height(), image.channels());
-    let src = image.data();
-    let mut tmp = vec![0.0f32; src.len()];
-    for y in 0..h {
-        for x in 0..w {
-            let o = (y * w + x) * c;
+    let mut tmp = vec![0.0f32; image.data().len()];
+    blur_lines(image.data(), &mut tmp, (w, c), (h, w * c), c, edge);
+    let mut out = vec![0.0f32; tmp.len()];
+    blur_lines(&tmp, &mut out, (h, w * c), (w, c), c, edge);
+    Image::from_vec(w, h, c, out).expect("same size as the input")
+}
+
+/// One pass of [`blur`] along `lines` lines of `len` pixels, `(len, step)` along a line and
+/// `(lines, line_step)` across them (in values), reading past a line's ends by `edge`. One
+/// function serves both axes: pyramids are built once per level, so the code's size matters
+/// more here than a specialised loop per axis.
+#[inline(never)]
+fn blur_lines(
+    src: &[f32],
+    out: &mut [f32],
+    (len, step): (usize, usize),
+    (lines, line_step): (usize, usize),
+    c: usize,
+    edge: Edge,
+) {
+    for line in 0..lines {
+        let base = line * line_step;
+        for i in 0..len {
+            let o = base + i * step;
             for (t, &k) in KERNEL.iter().enumerate() {
-                let sx = edge.resolve(x as isize + t as isize - 2, w);
-                let s = (y * w + sx) * c;
+                let s = base + edge.resolve(i as isize + t as isize - 2, len) * step;
                 for ch in 0..c {
-                    tmp[o + ch] += k * src[s + ch];
+                    out[o + ch] += k * src[s + ch];
                 }
             }
         }
     }
-    let mut out = vec![0.0f32; src.len()];
-    for y in 0..h {
-        for (t, &k) in KERNEL.iter().enumerate() {
-            let sy = edge.resolve(y as isize + t as isize - 2, h);
-            let (dst_row, src_row) = (&mut out[y * w * c..(y + 1) * w * c], &tmp[sy * w * c..]);
-            for (d, s) in dst_row.iter_mut().zip(src_row) {
-                *d += k * s;
-            }
-        }
-    }
-    Image::from_vec(w, h, c, out).expect("same size as the input")
 }
 
 /// One level down: blur, then keep the even pixels. A `w` x `h` image becomes

@@ -104,16 +104,16 @@ impl Occurrence {
             (width + 1).saturating_sub(size),
             (height + 1).saturating_sub(size),
         );
-        let mut penalties = Vec::with_capacity(columns * rows);
-        for y0 in 0..rows {
-            for x0 in 0..columns {
+        let penalties = (0..columns * rows)
+            .map(|i| {
+                let (x0, y0) = (i % columns, i / columns);
                 let (x1, y1) = (x0 + size, y0 + size);
                 let window =
                     table[y1 * stride + x1] - table[y0 * stride + x1] - table[y1 * stride + x0]
                         + table[y0 * stride + x0];
-                penalties.push(scale * (window * inv_even - 1.0).max(0.0) as f32);
-            }
-        }
+                scale * (window * inv_even - 1.0).max(0.0) as f32
+            })
+            .collect();
         Occurrence {
             coverage,
             penalties,
