@@ -22,6 +22,7 @@ pub struct GraphcutMerge {
     sources: Vec<(Image, i32, i32)>,
     constraints: Vec<u8>,
     gradient_cost: bool,
+    anatomy: bool,
     merge: Option<Merge>,
 }
 
@@ -39,6 +40,7 @@ impl GraphcutMerge {
             sources: Vec::new(),
             constraints: vec![0; width * height],
             gradient_cost: gradient_cost.unwrap_or(true),
+            anatomy: false,
             merge: None,
         })
     }
@@ -87,7 +89,9 @@ impl GraphcutMerge {
                 self.gradient_cost,
             )?);
         }
+        let anatomy = self.anatomy;
         let merge = self.merge.as_mut().expect("built above");
+        merge.set_anatomy(anatomy);
         let result = merge.step()?;
         let done = merge.is_done();
         let (source, cut) =
@@ -98,6 +102,26 @@ impl GraphcutMerge {
             ("source", source),
             ("cutCost", cut.into()),
         ]))
+    }
+
+    /// Records each step's seam graph for [`Self::placement_graph`] (off by default).
+    #[wasm_bindgen(js_name = setAnatomy)]
+    pub fn set_anatomy(&mut self, on: bool) {
+        self.anatomy = on;
+        if let Some(merge) = &mut self.merge {
+            merge.set_anatomy(on);
+        }
+    }
+
+    /// The last step's seam graph, as `GraphcutTextures.placementGraph()` gives it (kind 3:
+    /// held to the composite so far, the border or paint for an earlier source; kind 4: painted
+    /// for the new source); null unless `setAnatomy(true)` came before the step.
+    #[wasm_bindgen(js_name = placementGraph)]
+    pub fn placement_graph(&self) -> JsValue {
+        self.merge
+            .as_ref()
+            .and_then(Merge::placement_graph)
+            .map_or(JsValue::NULL, super::graphcut::graph_object)
     }
 
     #[wasm_bindgen(getter)]

@@ -246,3 +246,34 @@ test('the video panel shows a placement\'s cost slice with the drawn offset amon
   await page.setViewportSize({ width: 1400, height: 900 });
   assert.deepEqual(errors, []);
 });
+
+test('the merge panel shows its graph with the paint as constraint nodes', async () => {
+  const { page, errors } = demo;
+  await page.setViewportSize({ width: 1280, height: 720 });
+  await page.click('button[data-panel="merge"]');
+  await page.click('button[data-sample="tiles_128"]');
+  await page.waitForSelector('body[data-exemplar="tiles 128×128"]');
+  await page.check('#mg-anatomy-on');
+  assert.equal(await page.isVisible('#gc-anatomy'), true);
+  assert.equal(await page.$('#gc-cost'), null, 'no cost maps: the user placed the image');
+  // The second image starts at x = 64: paint inside the overlap for each image.
+  const box = await page.locator('#output-canvas').boundingBox();
+  const width = await page.$eval('#output-canvas', (c) => c.width);
+  const stroke = async (brush, x) => {
+    await page.check(`input[name="mg-brush"][value="${brush}"]`);
+    await page.mouse.move(box.x + (x / width) * box.width, box.y + 10);
+    await page.mouse.down();
+    await page.mouse.move(box.x + (x / width) * box.width, box.y + box.height - 10, { steps: 10 });
+    await page.mouse.up();
+  };
+  await stroke(1, 80);
+  await stroke(2, 110);
+  await page.click('#run');
+  await page.waitForSelector('body[data-merge-done="true"]', { timeout: 30_000 });
+  const graph = await page.$eval('#gc-graph', (e) => ({ ...e.dataset }));
+  assert.ok(Number(graph.keepOld) > 20, `${graph.keepOld} pixels held to the composite`);
+  assert.ok(Number(graph.takeNew) > 20, `${graph.takeNew} pixels held to the new image`);
+  assert.ok(Number(graph.cutPixels) > 10, 'the cut is drawn');
+  await page.locator('#gc-anatomy').screenshot({ path: `${RESULTS}/anatomy-merge.png` });
+  assert.deepEqual(errors, []);
+});

@@ -214,6 +214,17 @@ export const BAD_CALLS = [
     video.free();
     video.placementCosts();
   }, 'null pointer passed to rust'],
+  ['GraphcutMerge.placementGraph: before setAnatomy is null', () => {
+    const merge = new api.GraphcutMerge(16, 8);
+    merge.addSource(ex(), 0, 0);
+    merge.step();
+    if (merge.placementGraph() !== null) throw new Error('recorded without setAnatomy');
+  }, OK],
+  ['GraphcutMerge.placementGraph: on a freed merge', () => {
+    const merge = new api.GraphcutMerge(16, 8);
+    merge.free();
+    merge.placementGraph();
+  }, 'null pointer passed to rust'],
   // Objects of the wrong class where an Exemplar belongs.
   ['a FeatureMap as an Exemplar', () => new api.TextureOptimization(api.detectFeatures(ex(), {}), {}), /Exemplar/],
   ['a plain object as an Exemplar', () => new api.GraphcutTextures({ width: 8, height: 8 }, {}), /Exemplar/],

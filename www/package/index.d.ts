@@ -350,6 +350,11 @@ export class GraphcutMerge implements Steppable<GraphcutMergeEvent> {
   renderInto(target: RgbaTarget): void;
   renderSeams(target: RgbaTarget): void;
   renderSources(target: RgbaTarget): void;
+  /** Records each step's seam graph for `placementGraph()` (off by default). */
+  setAnatomy(on: boolean): void;
+  /** The last step's seam graph, painted pixels as its constraint nodes (kind 3: held to the
+   * composite so far; 4: to the new source); null unless `setAnatomy(true)` came first. */
+  placementGraph(): PlacementGraph | null;
   readonly done: boolean;
   readonly width: number;
   readonly height: number;

@@ -112,7 +112,8 @@ export function drawGraph(canvas, g) {
     }
   }
   ctx.stroke();
-  return { zoom, cutPixels };
+  const count = (k) => kind.filter((v) => v === k).length;
+  return { zoom, cutPixels, keepOld: count(3), takeNew: count(4) };
 }
 
 /** What the graph readout says about the pixel under the pointer. */
@@ -141,7 +142,7 @@ export function showPlacementAnatomy($, surface, graph) {
   }
   if (graph) {
     const f = drawGraph($('gc-graph'), graph);
-    $('gc-graph').dataset.cutPixels = String(f.cutPixels);
+    Object.assign($('gc-graph').dataset, { cutPixels: String(f.cutPixels), keepOld: String(f.keepOld), takeNew: String(f.takeNew) });
     $('gc-graph').onpointermove = (e) => {
       const rect = e.currentTarget.getBoundingClientRect();
       const x = Math.floor(((e.clientX - rect.left) / rect.width) * graph.width);

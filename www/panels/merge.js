@@ -7,6 +7,11 @@ import { SAMPLES } from '../lib/samples.js';
 import { explain } from '../lib/explain.js';
 import { paintable, unpaintable } from '../lib/keyboard-brush.js';
 import { remoteSession } from '../lib/worker.js';
+import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
+
+// The placement anatomy's graph view without its cost maps: the user placed the image, so no
+// offset was searched or drawn.
+const GRAPH_HTML = ANATOMY_HTML.replace(/<h3>Where could[\s\S]*?(?=<h3>The graph)/, '');
 
 export const id = 'merge';
 export const title = 'Graph-cut merge';
@@ -20,6 +25,7 @@ export function createPanel(ui) {
   let mask = null;
   let layout = null;
   let painting = false;
+  const anatomyOn = () => ui.$('mg-anatomy-on')?.checked ?? false;
 
   function optionsHtml() {
     const choices = SAMPLES.map((s) => `<option value="${s.url}" ${s.id === 'sand_128' ? 'selected' : ''}>${s.label}</option>`).join('');
@@ -32,7 +38,8 @@ export function createPanel(ui) {
         <label><input type="radio" name="mg-brush" class="view" value="0"> erase</label>
         <label>size <input id="mg-size" class="view" type="number" value="6" min="1" max="40" step="1"></label>
       </span>
-      <button id="mg-clear" type="button">Clear paint</button>`;
+      <button id="mg-clear" type="button">Clear paint</button>
+      <label title="the graph whose minimum cut is the seam, with the paint as its constraint nodes"><input id="mg-anatomy-on" type="checkbox"> graph view</label>`;
   }
 
   async function loadSecond() {
@@ -64,7 +71,9 @@ export function createPanel(ui) {
     computeLayout();
     drop();
     const current = (pending = (async () => {
-      const made = await remoteSession('GraphcutMerge', [layout.width, layout.height, true], { views: ['renderInto', 'renderSeams'] });
+      const wanted = () => ({ views: ['renderInto', 'renderSeams'], calls: anatomyOn() ? ['placementGraph'] : [] });
+      const made = await remoteSession('GraphcutMerge', [layout.width, layout.height, true], wanted);
+      if (anatomyOn()) await made.send('setAnatomy', true);
       await made.send('addSource', { exemplar: ui.exemplar() }, 0, 0);
       await made.send('addSource', { exemplar: second }, layout.offset, 0);
       await made.send('setConstraints', mask);
@@ -131,7 +140,8 @@ export function createPanel(ui) {
     sideHtml: `<div class="readout" id="mg-readout">paint on the image, then Run or Step</div>
       <div class="explain" id="mg-explain" data-history-text aria-live="polite"></div>
       <p class="legend">Blue paint: must come from the first image (the exemplar). Orange: from the second.
-      Red lines: the seam the graph cut chose.</p>`,
+      Red lines: the seam the graph cut chose.</p>
+      ${GRAPH_HTML}`,
     mount() {
       const canvas = ui.outputCanvas;
       canvas.onpointerdown = (e) => { painting = true; paintAt(e); };
@@ -140,6 +150,8 @@ export function createPanel(ui) {
       window.addEventListener('pointerup', this.onPointerUp);
       paintable(canvas, 'Paint which image each pixel must come from');
       ui.$('mg-clear').addEventListener('click', () => { mask?.fill(0); drop(); draw(); });
+      // The graph is recorded from the merge's first step: toggling it starts the merge over.
+      ui.$('mg-anatomy-on').addEventListener('change', () => this.reset());
       ui.$('mg-second').addEventListener('change', async () => { await loadSecond(); layout = null; this.reset(); });
       loadSecond().then(() => this.reset());
     },
@@ -162,10 +174,13 @@ export function createPanel(ui) {
         ? `merged · cut cost ${event.cutCost.toFixed(2)}`
         : `source ${event.source + 1} laid down`;
       explain(ui.$('mg-explain'), event.done ? 'mg-done' : 'mg-start');
+      if (anatomyOn()) showPlacementAnatomy(ui.$, null, merge?.result('placementGraph'));
       if (event.done) document.body.dataset.mergeDone = 'true';
     },
     reset() {
       drop();
+      const section = ui.$('gc-anatomy');
+      if (section) section.hidden = !anatomyOn();
       delete document.body.dataset.mergeDone;
       if (second && ui.exemplar()) {
         computeLayout();

@@ -119,6 +119,21 @@ impl Merge {
         self.next >= self.offsets.len()
     }
 
+    /// Records (or stops recording) each step's seam graph for the page's graph view: the
+    /// painted pixels are its constraint nodes (held to the composite, or to the new source).
+    pub fn set_anatomy(&mut self, on: bool) {
+        self.synthesis.record_anatomy = on;
+        if !on {
+            self.synthesis.last_graph = None;
+        }
+    }
+
+    /// The seam graph of the last step (recorded while the anatomy is on).
+    #[must_use]
+    pub fn placement_graph(&self) -> Option<&super::anatomy::GraphView> {
+        self.synthesis.last_graph.as_ref()
+    }
+
     /// Lays the next source down; returns its index and the cut cost, or None when all are down.
     pub fn step(&mut self) -> Result<Option<(usize, f64)>> {
         if self.is_done() {
@@ -162,6 +177,7 @@ impl Merge {
 
 #[cfg(test)]
 mod tests {
+    use super::super::anatomy::NodeKind;
     use super::*;
 
     #[test]
@@ -252,5 +268,38 @@ mod tests {
                 .to_string()
                 .contains("outside")
         );
+    }
+
+    /// The graph view of a merge step shows the paint as constraint nodes: pixels painted for
+    /// the composite so far held to it, pixels painted for the new source held to that, and the
+    /// cut between them.
+    #[test]
+    fn the_graph_view_shows_the_paint_as_constraint_nodes() {
+        let a = Image::from_fn(40, 30, 3, |x, _, _| x as f32 / 40.0).unwrap();
+        let b = Image::from_fn(40, 30, 3, |_, y, _| y as f32 / 30.0).unwrap();
+        let (w, h) = (60, 30);
+        let mut constraints = vec![0u8; w * h];
+        for y in 5..25 {
+            constraints[y * w + 24] = 1; // in the overlap, for the first source
+            constraints[y * w + 34] = 2; // in the overlap, for the second
+        }
+        let mut merge = Merge::new(w, h, vec![(a, 0, 0), (b, 20, 0)], constraints, false).unwrap();
+        merge.set_anatomy(true);
+        merge.step().unwrap();
+        merge.step().unwrap();
+        let g = merge.placement_graph().expect("recorded").clone();
+        // The second source's box starts at x = 20.
+        assert_eq!((g.x, g.y, g.width, g.height), (20, 0, 40, 30));
+        let kind = |x: usize, y: usize| g.kind[y * g.width + x - 20];
+        let taken = |x: usize, y: usize| g.taken[y * g.width + x - 20] == 1;
+        for y in 5..25 {
+            assert_eq!(kind(24, y), NodeKind::KeepOld as u8, "row {y}");
+            assert_eq!(kind(34, y), NodeKind::TakeNew as u8, "row {y}");
+            assert!(!taken(24, y) && taken(34, y), "row {y}");
+        }
+        // Beyond the first source nothing was covered: those pixels take the new one, no node.
+        assert_eq!(kind(45, 10), NodeKind::New as u8);
+        merge.set_anatomy(false);
+        assert!(merge.placement_graph().is_none());
     }
 }
