@@ -3,7 +3,7 @@
 // soft-constraint demo: paint on a finished texture optimisation and the synthesis follows.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { canvasPixels, openDemo, RESULTS } from './harness.mjs';
+import { canvasPixels, finishedOptimizationForPaint, openDemo, RESULTS } from './harness.mjs';
 
 let demo;
 before(async () => {
@@ -51,28 +51,7 @@ test('the flow panel animates, compares with the naive warp and records a WebM',
 
 test('painting on a finished texture optimisation pulls it toward the paint', async () => {
   const { page, errors } = demo;
-  await page.click('button[data-panel="optimization"]');
-  await page.click('button[data-sample="tiles_64"]');
-  await page.waitForSelector('body[data-exemplar="tiles 64×64"]');
-  await page.fill('#out-width', '96');
-  await page.fill('#out-height', '96');
-  await page.dispatchEvent('#out-height', 'change');
-  await page.click('#run');
-  await page.waitForSelector('body[data-optimization-done="true"]', { timeout: 60_000 });
-  const redness = async () => {
-    const px = await canvasPixels(page, 'output-canvas');
-    // Mean of (red - green) over the middle band that the stroke covers.
-    let sum = 0;
-    let n = 0;
-    for (let y = 40; y < 56; y++) {
-      for (let x = 20; x < 76; x++) {
-        const i = (y * 96 + x) * 4;
-        sum += px[i] - px[i + 1];
-        n++;
-      }
-    }
-    return sum / n;
-  };
+  const redness = await finishedOptimizationForPaint(page);
   const before = await redness();
   await page.check('#to-paint');
   await page.fill('#to-colour', '#ff0000');

@@ -41,6 +41,28 @@ export const canvasPixels = (page, id = 'output-canvas') =>
   }, id);
 
 /**
+ * The soft-constraint demo's start: texture optimisation of tiles 64x64 to 96x96 run to done on
+ * its panel. Returns `redness()`: the mean red minus green over the middle band (rows 40-55,
+ * columns 20-75) that the demo's strokes cover, to see the synthesis follow red paint.
+ */
+export async function finishedOptimizationForPaint(page) {
+  await page.click('button[data-panel="optimization"]');
+  await page.click('button[data-sample="tiles_64"]');
+  await page.waitForSelector('body[data-exemplar="tiles 64×64"]');
+  await page.fill('#out-width', '96');
+  await page.fill('#out-height', '96');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.click('#run');
+  await page.waitForSelector('body[data-optimization-done="true"]', { timeout: 60_000 });
+  return async () => {
+    const px = await canvasPixels(page, 'output-canvas');
+    let sum = 0;
+    for (let y = 40; y < 56; y++) for (let x = 20; x < 76; x++) sum += px[(y * 96 + x) * 4] - px[(y * 96 + x) * 4 + 1];
+    return sum / (16 * 56);
+  };
+}
+
+/**
  * Quality figures `{ coherence, completeness, histogram }` against the sample texture `sample`
  * (e.g. 'tiles_64'), measured in the page by the same wasm build the page uses, of a `width` x
  * `height` image: `pixels` (RGBA, as `canvasPixels` returns them), or, to give assertions a

@@ -3,7 +3,7 @@
 // panel has an accessible name (from Chromium's accessibility tree); focus is visible.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { canvasPixels, openDemo, RESULTS } from './harness.mjs';
+import { finishedOptimizationForPaint, openDemo, RESULTS } from './harness.mjs';
 
 let demo;
 before(async () => {
@@ -118,20 +118,7 @@ test('every control of every panel has an accessible name', async () => {
 
 test('keyboard only: a painted stroke of soft constraints pulls the texture toward the paint', async () => {
   const { page, errors } = demo;
-  await page.click('#tab-optimization');
-  await page.click('button[data-sample="tiles_64"]');
-  await page.waitForSelector('body[data-exemplar="tiles 64×64"]');
-  await page.fill('#out-width', '96');
-  await page.fill('#out-height', '96');
-  await page.dispatchEvent('#out-height', 'change');
-  await page.click('#run');
-  await page.waitForSelector('body[data-optimization-done="true"]', { timeout: 60_000 });
-  const redness = async () => {
-    const px = await canvasPixels(page, 'output-canvas');
-    let sum = 0;
-    for (let y = 40; y < 56; y++) for (let x = 20; x < 76; x++) sum += px[(y * 96 + x) * 4] - px[(y * 96 + x) * 4 + 1];
-    return sum / (16 * 56);
-  };
+  const redness = await finishedOptimizationForPaint(page);
   const before = await redness();
   await page.fill('#to-colour', '#ff0000');
   // From here on the keyboard only: Space ticks "paint", Tab reaches the canvas.
