@@ -3,7 +3,7 @@
 // of eq. 3, and the seam graph with a minimum cut; the hover readout names a pixel's arcs.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openDemo, RESULTS } from './harness.mjs';
+import { openDemo, openPanel, RESULTS } from './harness.mjs';
 
 let demo;
 before(async () => {
@@ -13,12 +13,7 @@ after(async () => demo?.close());
 
 test('the placement anatomy shows the cost surface, the probabilities and the cut', async () => {
   const { page, errors } = demo;
-  await page.click('button[data-panel="graphcut"]');
-  await page.click('button[data-sample="gravel_128"]');
-  await page.waitForSelector('body[data-exemplar="gravel 128×128"]');
-  await page.fill('#out-width', '256');
-  await page.fill('#out-height', '256');
-  await page.dispatchEvent('#out-height', 'change');
+  await openPanel(page, 'graphcut', 'gravel_128', 256);
   await page.check('#gc-anatomy-on');
   assert.equal(await page.isVisible('#gc-anatomy'), true);
   const ranks = [];
@@ -57,12 +52,7 @@ test('the placement anatomy shows the cost surface, the probabilities and the cu
 
 test('the step anatomy shows the E-step output and the M-step matches apart', async () => {
   const { page, errors } = demo;
-  await page.click('button[data-panel="optimization"]');
-  await page.click('button[data-sample="gravel_64"]');
-  await page.waitForSelector('body[data-exemplar="gravel 64×64"]');
-  await page.fill('#out-width', '96');
-  await page.fill('#out-height', '96');
-  await page.dispatchEvent('#out-height', 'change');
+  await openPanel(page, 'optimization', 'gravel_64', 96);
   await page.check('#to-anatomy-on');
   assert.equal(await page.isVisible('#to-anatomy'), true);
   const halves = [];
@@ -114,12 +104,7 @@ test('every method panel explains what is on screen and cites its paper', async 
 
 test('feature-guided graph-cut placements show their anatomy too', async () => {
   const { page, errors } = demo;
-  await page.click('button[data-panel="features"]');
-  await page.click('button[data-sample="brick_128"]');
-  await page.waitForSelector('body[data-exemplar="brick 128×128"]');
-  await page.fill('#out-width', '192');
-  await page.fill('#out-height', '192');
-  await page.dispatchEvent('#out-height', 'change');
+  await openPanel(page, 'features', 'brick_128', 192);
   await page.check('#fg-anatomy-on');
   assert.equal(await page.isVisible('#gc-anatomy'), true);
   for (let n = 1; n <= 3; n++) {
@@ -145,12 +130,7 @@ test('feature-guided graph-cut placements show their anatomy too', async () => {
 test('the flow panel splits a frame into E-step and M-step beside its warped previous frame', async () => {
   const { page, errors } = demo;
   await page.setViewportSize({ width: 1280, height: 720 });
-  await page.click('button[data-panel="flow"]');
-  await page.click('button[data-sample="gravel_64"]');
-  await page.waitForSelector('body[data-exemplar="gravel 64×64"]');
-  await page.fill('#out-width', '64');
-  await page.fill('#out-height', '64');
-  await page.dispatchEvent('#out-height', 'change');
+  await openPanel(page, 'flow', 'gravel_64', 64);
   await page.fill('#fl-frames', '3');
   await page.dispatchEvent('#fl-frames', 'change');
   await page.check('#fl-anatomy-on');
@@ -250,9 +230,7 @@ test('the video panel shows a placement\'s cost slice with the drawn offset amon
 test('the merge panel shows its graph with the paint as constraint nodes', async () => {
   const { page, errors } = demo;
   await page.setViewportSize({ width: 1280, height: 720 });
-  await page.click('button[data-panel="merge"]');
-  await page.click('button[data-sample="tiles_128"]');
-  await page.waitForSelector('body[data-exemplar="tiles 128×128"]');
+  await openPanel(page, 'merge', 'tiles_128');
   await page.check('#mg-anatomy-on');
   assert.equal(await page.isVisible('#gc-anatomy'), true);
   assert.equal(await page.$('#gc-cost'), null, 'no cost maps: the user placed the image');

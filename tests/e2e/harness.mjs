@@ -41,17 +41,28 @@ export const canvasPixels = (page, id = 'output-canvas') =>
   }, id);
 
 /**
+ * Opens the panel `panel` with the built-in sample `sample` (e.g. 'gravel_64') and, given
+ * `size`, a `size` x `size` output: the set-up most page tests start from.
+ */
+export async function openPanel(page, panel, sample, size) {
+  await page.click(`button[data-panel="${panel}"]`);
+  await page.click(`button[data-sample="${sample}"]`);
+  const [name, side] = sample.split('_');
+  await page.waitForSelector(`body[data-exemplar="${name} ${side}×${side}"]`);
+  if (size) {
+    await page.fill('#out-width', String(size));
+    await page.fill('#out-height', String(size));
+    await page.dispatchEvent('#out-height', 'change');
+  }
+}
+
+/**
  * The soft-constraint demo's start: texture optimisation of tiles 64x64 to 96x96 run to done on
  * its panel. Returns `redness()`: the mean red minus green over the middle band (rows 40-55,
  * columns 20-75) that the demo's strokes cover, to see the synthesis follow red paint.
  */
 export async function finishedOptimizationForPaint(page) {
-  await page.click('button[data-panel="optimization"]');
-  await page.click('button[data-sample="tiles_64"]');
-  await page.waitForSelector('body[data-exemplar="tiles 64×64"]');
-  await page.fill('#out-width', '96');
-  await page.fill('#out-height', '96');
-  await page.dispatchEvent('#out-height', 'change');
+  await openPanel(page, 'optimization', 'tiles_64', 96);
   await page.click('#run');
   await page.waitForSelector('body[data-optimization-done="true"]', { timeout: 60_000 });
   return async () => {
