@@ -11,6 +11,19 @@ before(async () => {
 });
 after(async () => demo?.close());
 
+/** The drawn offset's ring (cyan) is on the cost canvas, and hovering the graph names a pixel's arcs. */
+async function assertMarkedAndHoverable(page) {
+  const cyan = await page.$eval('#gc-cost', (c) => {
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] < 120 && d[i + 1] > 180 && d[i + 2] > 200) n++;
+    return n;
+  });
+  assert.ok(cyan > 10, `${cyan} marker pixels`);
+  await page.hover('#gc-graph');
+  assert.match(await page.textContent('#gc-graph-readout'), /pixel \(\d+, \d+\): .*arc right/);
+}
+
 test('the placement anatomy shows the cost surface, the probabilities and the cut', async () => {
   const { page, errors } = demo;
   await openPanel(page, 'graphcut', 'gravel_128', 256);
@@ -33,16 +46,7 @@ test('the placement anatomy shows the cost surface, the probabilities and the cu
   // With k = 0.01, eq. 3 draws from the cheapest few per cent of offsets: the marked offset lies
   // in the surface's minimum region.
   assert.ok(Math.max(...ranks) < 0.05, `ranks of the drawn offsets: ${ranks}`);
-  // The drawn offset's ring (cyan) is on the cost canvas.
-  const cyan = await page.$eval('#gc-cost', (c) => {
-    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-    let n = 0;
-    for (let i = 0; i < d.length; i += 4) if (d[i] < 120 && d[i + 1] > 180 && d[i + 2] > 200) n++;
-    return n;
-  });
-  assert.ok(cyan > 10, `${cyan} marker pixels`);
-  await page.hover('#gc-graph');
-  assert.match(await page.textContent('#gc-graph-readout'), /pixel \(\d+, \d+\): .*arc right/);
+  await assertMarkedAndHoverable(page);
   await page.screenshot({ path: `${RESULTS}/anatomy-graphcut.png`, fullPage: true });
   // Off again: nothing more is recorded and the view hides.
   await page.uncheck('#gc-anatomy-on');
@@ -212,15 +216,7 @@ test('the video panel shows a placement\'s cost slice with the drawn offset amon
   }
   // With k = 0.01, eq. 3 draws from the cheapest few per cent of the offsets at its time shift.
   assert.ok(Math.max(...ranks) < 0.05, `ranks of the drawn offsets: ${ranks}`);
-  const cyan = await page.$eval('#gc-cost', (c) => {
-    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-    let n = 0;
-    for (let i = 0; i < d.length; i += 4) if (d[i] < 120 && d[i + 1] > 180 && d[i + 2] > 200) n++;
-    return n;
-  });
-  assert.ok(cyan > 10, `${cyan} marker pixels`);
-  await page.hover('#gc-graph');
-  assert.match(await page.textContent('#gc-graph-readout'), /pixel \(\d+, \d+\): .*arc right/);
+  await assertMarkedAndHoverable(page);
   await page.screenshot({ path: `${RESULTS}/anatomy-video.png`, fullPage: false });
   await page.screenshot({ path: `${RESULTS}/anatomy-video-full.png`, fullPage: true });
   await page.setViewportSize({ width: 1400, height: 900 });
