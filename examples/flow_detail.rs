@@ -2,15 +2,17 @@
 //! [SAMPLE] [SIZE] [FRAMES]` (defaults: the page's `tiles_128 256 60`, a vortex of strength 2).
 //! Prints frame 1's flat fraction, coherence and flow energy, the means over frames 30-60 and
 //! their ratios to frame 1, beside the naive warp's; `WRITE=dir` writes frames 1 and the last as
-//! PNGs. Options from the environment: `HIST` (histogramMatching, 1), `LAMBDA` (0.2),
+//! PNGs. Coherence is given plain and against the exemplar at half-pixel positions too
+//! ([`sub_pixel_coherence`]: sub-pixel matches place content between pixels). Options from the
+//! environment: `HIST` (histogramMatching, 1), `LAMBDA` (0.2),
 //! `FRAME_ITERATIONS` (3), `FRAME_SIZES` (the default, 32,16,8), `EVERY` (1); `KIND` and
-//! `STRENGTH` pick another single flow (vortex, 2).
+//! `STRENGTH` pick another single flow (vortex, 2); `SUB_PIXEL=1` sub-pixel matches.
 
 use texsynth::core::{decode, encode_png};
 use texsynth::methods::flow::{
     Component, FlowEventKind, FlowKind, FlowOptions, FlowSession, FlowSource, FlowSpec,
 };
-use texsynth::methods::quality::quality;
+use texsynth::methods::quality::{quality, sub_pixel_coherence};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -37,6 +39,7 @@ fn main() {
         frame_sizes: std::env::var("FRAME_SIZES").map_or(FlowOptions::default().frame_sizes, |v| {
             v.split(',').map(|s| s.parse().expect("size")).collect()
         }),
+        sub_pixel: std::env::var("SUB_PIXEL").is_ok_and(|v| v == "1"),
         frame_iterations: std::env::var("FRAME_ITERATIONS")
             .map_or(3, |v| v.parse().expect("number")),
         ..FlowOptions::default()
@@ -56,14 +59,15 @@ fn main() {
                 || (every == 1 && index <= 6)
             {
                 let q = quality(&exemplar, &frame).expect("quality");
-                rows.push((index, q.flat, q.coherence, event.flow_energy));
+                let sub = sub_pixel_coherence(&exemplar, &frame).expect("quality");
+                rows.push((index, q.flat, q.coherence, event.flow_energy, sub));
                 let naive = if every == 1 {
                     quality(&exemplar, &session.naive_image().expect("naive")).expect("quality")
                 } else {
                     q
                 };
                 println!(
-                    "frame {index:>3}: flat {:.3} coherence {:.5} flow energy {:.5} (naive warp: flat {:.3} coherence {:.5})",
+                    "frame {index:>3}: flat {:.3} coherence {:.5} (sub-pixel {sub:.5}) flow energy {:.5} (naive warp: flat {:.3} coherence {:.5})",
                     q.flat, q.coherence, event.flow_energy, naive.flat, naive.coherence
                 );
             }
@@ -78,15 +82,16 @@ fn main() {
         }
     }
     let later: Vec<_> = rows.iter().filter(|r| r.0 >= 30).collect();
-    let mean = |f: fn(&(usize, f64, f64, f64)) -> f64| {
+    let mean = |f: fn(&(usize, f64, f64, f64, f64)) -> f64| {
         later.iter().map(|r| f(r)).sum::<f64>() / later.len() as f64
     };
     let first = rows[0];
-    let (flat, coherence, flow) = (mean(|r| r.1), mean(|r| r.2), mean(|r| r.3));
+    let (flat, coherence, flow, sub) = (mean(|r| r.1), mean(|r| r.2), mean(|r| r.3), mean(|r| r.4));
     println!(
-        "{name} {size}x{size}: frames 30-{frames} mean flat {flat:.3} ({:.2}x frame 1), coherence {coherence:.5} ({:.2}x), flow energy {flow:.5}; {:.1} s",
+        "{name} {size}x{size}: frames 30-{frames} mean flat {flat:.3} ({:.2}x frame 1), coherence {coherence:.5} ({:.2}x), sub-pixel coherence {sub:.5} ({:.2}x), flow energy {flow:.5}; {:.1} s",
         flat / first.1,
         coherence / first.2,
+        sub / first.4,
         start.elapsed().as_secs_f64()
     );
 }

@@ -26,6 +26,7 @@ const KNOWN: &[&str] = &[
     "frameIterations",
     "seed",
     "search",
+    "subPixel",
     "r",
     "tileable",
     "flow",
@@ -172,6 +173,7 @@ fn read_options(value: &JsValue) -> JsResult<(FlowOptions, FlowSource)> {
         search,
         r: js.number("r")?.map_or(d.r, |v| v as f32),
         tileable: js.boolean("tileable")?.unwrap_or(d.tileable),
+        sub_pixel: js.boolean("subPixel")?.unwrap_or(d.sub_pixel),
     };
     let flow = read_flow(
         js.value("flow")?,

@@ -160,7 +160,12 @@ impl FlowSession {
                     energy: crate::methods::optimization::Energy::Pixels,
                     wavelet_detail_weight: 0.0,
                 };
-                LevelSolver::new(exemplar, setup, &mut rng)
+                let solver = LevelSolver::new(exemplar, setup, &mut rng);
+                if options.sub_pixel {
+                    solver.with_sub_pixel(exemplar, &mut rng)
+                } else {
+                    solver
+                }
             })
             .collect();
         let budget = StepBudget::for_pixels(options.output_width * options.output_height);

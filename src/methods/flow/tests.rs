@@ -1,8 +1,8 @@
 //! Whole-animation tests of flow-guided synthesis on the samples.
 
 use super::*;
-use crate::core::Image;
 use crate::core::testing::{noise, sample};
+use crate::core::{Edge, Image};
 use crate::methods::quality::quality;
 
 fn vortex(strength: f32) -> FlowSource {
@@ -232,6 +232,52 @@ fn a_whole_pixel_translation_with_a_strong_constraint_shifts_the_frame() {
         }
     }
     assert!(worst < 0.01, "largest difference from the shift {worst}");
+}
+
+/// How far (in half pixels, 0 to 16) `frame` lies to the right of `first`: the shift of `first`
+/// (tileable, wrapped) nearest to `frame`.
+fn half_pixels_moved(first: &Image, frame: &Image) -> usize {
+    let distance = |k: usize| {
+        let moved = crate::core::sample::shift(first, -(k as f32) / 2.0, 0.0, Edge::Wrap);
+        moved
+            .data()
+            .iter()
+            .zip(frame.data())
+            .map(|(a, b)| (a - b) * (a - b))
+            .sum::<f32>()
+    };
+    (0..=16)
+        .min_by(|&a, &b| distance(a).total_cmp(&distance(b)))
+        .unwrap()
+}
+
+#[test]
+fn a_slow_flow_moves_the_texture_only_with_sub_pixel_matches() {
+    // A quarter pixel per frame to the right, tileable, 16 frames: the flow moves the texture
+    // 3.75 px. Whole-pixel matches round every frame's move back to nothing and the texture
+    // stays put; sub-pixel matches keep the fractions and carry it along.
+    let exemplar = sample("grass_64");
+    let flow = FlowSource::Fields(vec![
+        FlowField::from_fn(48, 48, |_, _| (0.25, 0.0)).unwrap(),
+    ]);
+    let run = |sub_pixel| {
+        let opts = FlowOptions {
+            output_width: 48,
+            output_height: 48,
+            frames: 16,
+            tileable: true,
+            sub_pixel,
+            ..FlowOptions::default()
+        };
+        let (frames, ..) = animate(&exemplar, flow.clone(), opts);
+        half_pixels_moved(&frames[0], &frames[15])
+    };
+    let (whole, sub) = (run(false), run(true));
+    assert!(whole <= 1, "whole-pixel matches: moved {whole} half pixels");
+    assert!(
+        (6..=9).contains(&sub),
+        "sub-pixel matches: moved {sub} half pixels of 7.5"
+    );
 }
 
 #[test]

@@ -9,6 +9,7 @@ use super::features::feature_map;
 use super::histogram::{Scratch, SortedChannels};
 use super::m_step::Matcher;
 use super::occurrence::{Occurrence, strength};
+use super::phases;
 use super::queries::GridQueries;
 use super::schedule::{grid_axis, nearest_corner};
 use super::wavelet_energy::{Energy, WaveletEnergy};
@@ -61,6 +62,10 @@ struct OldGrid<'a> {
     rows: &'a [usize],
     matches: &'a [Pos],
     size: usize,
+    /// The space the matches index (its copies are phases when stacked).
+    space: &'a Neighbourhoods,
+    /// Where each node's content lies relative to its match beyond the phase (empty: nowhere).
+    offsets: &'a [(f64, f64)],
 }
 
 /// An M-step under way: the output's feature map it compares with, its occurrence penalty,
@@ -87,6 +92,13 @@ pub struct LevelSolver {
     cols: Vec<usize>,
     rows: Vec<usize>,
     matches: Vec<Pos>,
+    /// With sub-pixel matches ([`LevelSolver::with_sub_pixel`]): the exemplar's moved copies
+    /// stacked (the E-step reads them), each node's content position beyond its match and
+    /// phase (carried on exactly, so that rounding does not add up over frames), and the
+    /// matches as positions in the exemplar (the teaching views show them).
+    stacked: Option<Image>,
+    offsets: Vec<(f64, f64)>,
+    local_matches: Vec<Pos>,
     /// Texture distances after the last M-step (infinite before the first): ||x_p - z_p||^2
     /// (fall-off weighted), plus the weighted wavelet term with a wavelet energy. The IRLS
     /// weights and the occurrence penalty's scale come from them.
@@ -170,6 +182,32 @@ impl LevelSolver {
             cols,
             rows,
             matches,
+            stacked: None,
+            offsets: Vec::new(),
+            local_matches: Vec::new(),
+        }
+    }
+
+    /// Matches at half-pixel precision (see [`phases`]): the searches run over the exemplar
+    /// moved by each phase, and carrying matches along a flow keeps their fractions. For flow
+    /// frames; `exemplar` is the one the level was made with.
+    #[must_use]
+    pub fn with_sub_pixel(mut self, exemplar: &Image, rng: &mut Rng) -> Self {
+        debug_assert!(self.wavelet.is_none(), "flow frames compare pixels");
+        let (copies, stacked) = phases::stacked_exemplar(exemplar);
+        let space =
+            Neighbourhoods::stacked(&phases::copy_maps(&copies, self.setup.mu), self.setup.size);
+        self.matcher = Matcher::over(space, self.setup.search, rng).with_passes(self.setup.passes);
+        self.stacked = Some(stacked);
+        self.local_matches = self.matches.clone();
+        self
+    }
+
+    /// The exemplar position of every match (its copy taken off).
+    fn refresh_local(&mut self) {
+        if self.stacked.is_some() {
+            let space = self.matcher.space();
+            self.local_matches = self.matches.iter().map(|&z| space.copy_of(z).1).collect();
         }
     }
 
@@ -209,10 +247,14 @@ impl LevelSolver {
         &self.distances
     }
 
-    /// z_p of every node, row by row.
+    /// z_p of every node, row by row (with sub-pixel matches: rounded down to whole pixels).
     #[must_use]
     pub fn matches(&self) -> &[Pos] {
-        &self.matches
+        if self.stacked.is_some() {
+            &self.local_matches
+        } else {
+            &self.matches
+        }
     }
 
     /// Replaces every node's match from another solver's: the node's centre is mapped by
@@ -230,51 +272,87 @@ impl LevelSolver {
             rows: &old.rows,
             matches: &old.matches,
             size: old.setup.size,
+            space: old.matcher.space(),
+            offsets: &old.offsets,
         };
-        let carried = self.carried(&old, to_old, scale);
+        let (carried, offsets) = self.carried(&old, to_old, scale);
         self.matches = carried;
+        self.offsets = offsets;
+        self.refresh_local();
         self.distances.fill(f32::INFINITY);
         self.pixel_distances.fill(f32::INFINITY);
     }
 
     /// Moves the matches along a motion: each node takes the match found at `to_old` of its
-    /// centre in this same grid (between animation frames: the centre moved back along the flow).
+    /// centre in this same grid (between animation frames: the centre moved back along the flow),
+    /// to the nearest half pixel with sub-pixel matches.
     pub fn move_along(&mut self, to_old: impl Fn(f64, f64) -> (f64, f64)) {
         let old = OldGrid {
             cols: &self.cols,
             rows: &self.rows,
             matches: &self.matches,
             size: self.setup.size,
+            space: self.matcher.space(),
+            offsets: &self.offsets,
         };
-        let carried = self.carried(&old, to_old, (1.0, 1.0));
+        let (carried, offsets) = self.carried(&old, to_old, (1.0, 1.0));
         self.matches = carried;
+        self.offsets = offsets;
+        self.refresh_local();
         self.distances.fill(f32::INFINITY);
         self.pixel_distances.fill(f32::INFINITY);
     }
 
+    /// The carried matches and, with sub-pixel matches, where each node's content lies beyond
+    /// its match and phase.
     fn carried(
         &self,
         old: &OldGrid<'_>,
         to_old: impl Fn(f64, f64) -> (f64, f64),
         scale: (f64, f64),
-    ) -> Vec<Pos> {
+    ) -> (Vec<Pos>, Vec<(f64, f64)>) {
         let half_old = old.size as f64 / 2.0;
         let half_new = self.setup.size as f64 / 2.0;
         let old_nx = old.cols.len();
         let space = self.matcher.space();
+        let (ex_nx, ex_ny) = space.extent();
+        let sub_pixel = self.stacked.is_some();
         let nx = self.cols.len();
-        (0..self.matches.len())
+        let mut offsets = Vec::with_capacity(if sub_pixel { self.matches.len() } else { 0 });
+        let matches = (0..self.matches.len())
             .map(|n| {
                 let (x, y) = (self.cols[n % nx], self.rows[n / nx]);
                 let (cx, cy) = to_old(x as f64 + half_new, y as f64 + half_new);
                 let i = nearest_corner(old.cols, cx - half_old);
                 let j = nearest_corner(old.rows, cy - half_old);
-                let z = old.matches[j * old_nx + i];
-                let zx = (f64::from(z.x) + cx - old.cols[i] as f64) * scale.0 - half_new;
-                let zy = (f64::from(z.y) + cy - old.rows[j] as f64) * scale.1 - half_new;
-                space.clamp(zx.round() as i64, zy.round() as i64)
+                let old_node = j * old_nx + i;
+                // The exemplar position of the old match's content: its phase, and what
+                // rounding to the phase left over.
+                let (copy, z) = old.space.copy_of(old.matches[old_node]);
+                let (phase_x, phase_y) = phases::offset(copy);
+                let (rest_x, rest_y) = old.offsets.get(old_node).copied().unwrap_or_default();
+                let zx = (f64::from(z.x) + phase_x + rest_x + cx - old.cols[i] as f64) * scale.0
+                    - half_new;
+                let zy = (f64::from(z.y) + phase_y + rest_y + cy - old.rows[j] as f64) * scale.1
+                    - half_new;
+                if !sub_pixel {
+                    return space.clamp(zx.round() as i64, zy.round() as i64);
+                }
+                let ((wx, sx), (wy, sy)) = (phases::split(zx), phases::split(zy));
+                let inside = (0..ex_nx as i64).contains(&wx) && (0..ex_ny as i64).contains(&wy);
+                let phase = phases::phase(sx, sy);
+                let (px, py) = phases::offset(phase);
+                // A position clamped into the exemplar keeps no fraction.
+                offsets.push(if inside {
+                    (zx - wx as f64 - px, zy - wy as f64 - py)
+                } else {
+                    (0.0, 0.0)
+                });
+                let whole = space.clamp(wx, wy);
+                space.in_copy(if inside { phase } else { 0 }, whole)
             })
-            .collect()
+            .collect();
+        (matches, offsets)
     }
 
     /// The M-step: gathers every x_p from `output` and improves its match, under the
@@ -417,6 +495,7 @@ impl LevelSolver {
                 );
             }
         }
+        self.refresh_local();
         Some(run.progress.changed())
     }
 
@@ -495,7 +574,7 @@ impl LevelSolver {
 
     fn matches_for<'a>(&'a self, exemplar: &'a Image, weights: &'a [f32]) -> Matches<'a> {
         Matches {
-            exemplar,
+            exemplar: self.stacked.as_ref().unwrap_or(exemplar),
             cols: &self.cols,
             rows: &self.rows,
             matches: &self.matches,

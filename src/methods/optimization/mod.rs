@@ -14,6 +14,7 @@ pub mod m_step;
 pub mod memory;
 pub mod occurrence;
 pub mod options;
+pub mod phases;
 pub mod queries;
 pub mod schedule;
 pub mod session;

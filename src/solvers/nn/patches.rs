@@ -102,6 +102,11 @@ pub struct Neighbourhoods {
     /// Transformed vectors, `vector_len()` each, in scan order of [`Neighbourhoods::pos_of`];
     /// empty when vectors are read from the feature map.
     transformed: Vec<f32>,
+    /// The feature map holds this many copies of the exemplar stacked vertically, each
+    /// `copy_height` rows (1 and the map's height unless [`Neighbourhoods::stacked`]): a
+    /// neighbourhood lies inside one copy, and `Pos::y` counts rows from the first copy's top.
+    copies: usize,
+    copy_height: usize,
 }
 
 impl Neighbourhoods {
@@ -114,11 +119,61 @@ impl Neighbourhoods {
         );
         let weights = gaussian_falloff(size, exemplar.dims);
         Neighbourhoods {
+            copy_height: exemplar.height,
             exemplar,
             size,
             weights,
             transformed: Vec::new(),
+            copies: 1,
         }
+    }
+
+    /// The neighbourhoods of several maps of one size (the same exemplar moved by fractions
+    /// of a pixel, for sub-pixel matches), stacked into one map so that every search and
+    /// distance runs unchanged. A position's copy is `y / copy_height`
+    /// ([`Neighbourhoods::copy_of`]).
+    #[must_use]
+    pub fn stacked(maps: &[FeatureMap], size: usize) -> Self {
+        let first = &maps[0];
+        assert!(
+            maps.iter()
+                .all(|m| (m.width, m.height, m.dims) == (first.width, first.height, first.dims)),
+            "stacked maps share a size"
+        );
+        let data = maps.iter().flat_map(|m| m.data.iter().copied()).collect();
+        let map = FeatureMap {
+            width: first.width,
+            height: first.height * maps.len(),
+            dims: first.dims,
+            data,
+        };
+        let mut space = Neighbourhoods::new(map, size);
+        assert!(size <= first.height, "neighbourhood fits a copy");
+        space.copies = maps.len();
+        space.copy_height = first.height;
+        space
+    }
+
+    /// Number of stacked copies (1 unless [`Neighbourhoods::stacked`]).
+    #[must_use]
+    pub fn copies(&self) -> usize {
+        self.copies
+    }
+
+    /// The copy a position lies in and its position within that copy.
+    #[must_use]
+    pub fn copy_of(&self, pos: Pos) -> (usize, Pos) {
+        let copy = pos.y as usize / self.copy_height;
+        (
+            copy,
+            Pos::new(pos.x as usize, pos.y as usize - copy * self.copy_height),
+        )
+    }
+
+    /// The position `local` within copy `copy`.
+    #[must_use]
+    pub fn in_copy(&self, copy: usize, local: Pos) -> Pos {
+        Pos::new(local.x as usize, local.y as usize + copy * self.copy_height)
     }
 
     /// The neighbourhoods of `exemplar` stored as `transform(vector)`, compared under
@@ -134,6 +189,7 @@ impl Neighbourhoods {
     ) -> Self {
         let mut space = Neighbourhoods::new(exemplar, size);
         assert_eq!(weights.len(), space.vector_len(), "one weight per value");
+        debug_assert_eq!(space.copies, 1, "transformed spaces are not stacked");
         let len = space.vector_len();
         let mut vectors = vec![0.0; space.count() * len];
         let mut gathered = vec![0.0; len];
@@ -195,35 +251,53 @@ impl Neighbourhoods {
         &self.exemplar
     }
 
-    /// Number of valid top-left corners along x and y.
+    /// Number of valid top-left corners along x and y (in each copy).
     #[must_use]
     pub fn extent(&self) -> (usize, usize) {
         (
             self.exemplar.width - self.size + 1,
-            self.exemplar.height - self.size + 1,
+            self.copy_height - self.size + 1,
         )
     }
 
     #[must_use]
     pub fn count(&self) -> usize {
         let (nx, ny) = self.extent();
-        nx * ny
+        nx * ny * self.copies
     }
 
-    /// The `i`-th neighbourhood in scan order.
+    /// The `i`-th neighbourhood in scan order (copy after copy).
     #[must_use]
     pub fn pos_of(&self, i: usize) -> Pos {
-        let nx = self.extent().0;
-        Pos::new(i % nx, i / nx)
+        let (nx, ny) = self.extent();
+        let (copy, r) = (i / (nx * ny), i % (nx * ny));
+        Pos::new(r % nx, r / nx + copy * self.copy_height)
     }
 
-    /// Clamps a corner into the valid range (used after propagation and random jumps).
+    /// Clamps a corner into the valid range (used after propagation and random jumps): into
+    /// the copy whose rows `y` falls in.
     #[must_use]
     pub fn clamp(&self, x: i64, y: i64) -> Pos {
+        let rows = (self.copies * self.copy_height) as i64;
+        let copy = (y.clamp(0, rows - 1) / self.copy_height as i64) as usize;
+        self.clamp_from(
+            self.in_copy(copy, Pos::default()),
+            x,
+            y - (copy * self.copy_height) as i64,
+        )
+    }
+
+    /// `base` moved by (dx, dy) and clamped into `base`'s own copy.
+    #[must_use]
+    pub fn clamp_from(&self, base: Pos, dx: i64, dy: i64) -> Pos {
         let (nx, ny) = self.extent();
-        Pos::new(
-            x.clamp(0, nx as i64 - 1) as usize,
-            y.clamp(0, ny as i64 - 1) as usize,
+        let (copy, local) = self.copy_of(base);
+        self.in_copy(
+            copy,
+            Pos::new(
+                (i64::from(local.x) + dx).clamp(0, nx as i64 - 1) as usize,
+                (i64::from(local.y) + dy).clamp(0, ny as i64 - 1) as usize,
+            ),
         )
     }
 
@@ -314,6 +388,36 @@ mod tests {
         assert!(n.distance(&q, Pos::new(0, 0), full * 0.1) > full * 0.1);
         assert_eq!(n.clamp(-5, 99), Pos::new(0, 5));
         assert_eq!(n.pos_of(8), Pos::new(1, 1));
+    }
+
+    #[test]
+    fn stacked_copies_keep_every_neighbourhood_inside_one_copy() {
+        let (a, b) = (ramp_map(10, 9, 3), ramp_map(10, 9, 3));
+        let b = FeatureMap {
+            data: b.data.iter().map(|v| 1.0 - v).collect(),
+            ..b
+        };
+        let n = Neighbourhoods::stacked(&[a, b.clone()], 4);
+        assert_eq!((n.copies(), n.extent(), n.count()), (2, (7, 6), 84));
+        // Scan order runs through copy 0, then copy 1 (rows 9 to 17).
+        assert_eq!(n.pos_of(41), Pos::new(6, 5));
+        assert_eq!(n.pos_of(42), Pos::new(0, 9));
+        assert_eq!(n.copy_of(Pos::new(3, 11)), (1, Pos::new(3, 2)));
+        // Clamping never leaves a copy, nor straddles two.
+        assert_eq!(n.clamp_from(Pos::new(3, 11), 9, 9), Pos::new(6, 14));
+        assert_eq!(n.clamp_from(Pos::new(3, 11), -9, -9), Pos::new(0, 9));
+        assert_eq!(n.clamp(2, 7), Pos::new(2, 5));
+        assert_eq!(n.clamp(2, 13), Pos::new(2, 13));
+        assert_eq!(n.clamp(2, 40), Pos::new(2, 14));
+        // A neighbourhood of copy 1 is read from copy 1.
+        let alone = Neighbourhoods::new(b, 4);
+        let mut q = vec![0.0; n.vector_len()];
+        alone.copy_to(Pos::new(3, 2), &mut q);
+        assert_eq!(
+            n.distance(&q, n.in_copy(1, Pos::new(3, 2)), f32::INFINITY),
+            0.0
+        );
+        assert!(n.distance(&q, Pos::new(3, 2), f32::INFINITY) > 0.0);
     }
 
     #[test]

@@ -98,19 +98,13 @@ impl Search<'_> {
             if (0..nx as isize).contains(&qx) {
                 let m = matches[gy * nx + qx as usize];
                 let shift = grid.cols[gx] as i64 - grid.cols[qx as usize] as i64;
-                consider(
-                    space.clamp(i64::from(m.x) + shift, i64::from(m.y)),
-                    &mut best,
-                );
+                consider(space.clamp_from(m, shift, 0), &mut best);
             }
             let qy = gy as isize - step;
             if (0..ny as isize).contains(&qy) {
                 let m = matches[qy as usize * nx + gx];
                 let shift = grid.rows[gy] as i64 - grid.rows[qy as usize] as i64;
-                consider(
-                    space.clamp(i64::from(m.x), i64::from(m.y) + shift),
-                    &mut best,
-                );
+                consider(space.clamp_from(m, 0, shift), &mut best);
             }
             // Random search around the current best, radius halving down to one pixel.
             let mut radius = max_radius;
@@ -118,12 +112,10 @@ impl Search<'_> {
                 let span = (2 * radius + 1) as u32;
                 let dx = i64::from(rng.below(span)) - radius;
                 let dy = i64::from(rng.below(span)) - radius;
-                consider(
-                    space.clamp(i64::from(best.0.x) + dx, i64::from(best.0.y) + dy),
-                    &mut best,
-                );
+                consider(space.clamp_from(best.0, dx, dy), &mut best);
                 radius /= 2;
             }
+
             if best.0 != matches[i] {
                 progress.changed[i] = true;
             }
@@ -214,6 +206,75 @@ mod tests {
         for (k, d) in distances.iter().enumerate() {
             let (_, exact_d) = exact::nearest(&space, &queries[k * len..(k + 1) * len]);
             assert!(*d <= exact_d + 1e-6, "node {k}: {d} vs exact {exact_d}");
+        }
+    }
+
+    #[test]
+    fn propagation_carries_a_stacked_copy_but_random_search_stays_in_its_own() {
+        // Two copies as sub-pixel matching stacks them: the map, and the map half a pixel to
+        // the right (the mean of horizontal neighbours). The queries are cut from the second
+        // copy; one node starts on its exact match there, the others in the first copy. Only
+        // propagation crosses copies (a node's phase comes from the flow or its neighbours,
+        // never from a random jump), and it carries the exact match to every node.
+        let map = exemplar(40, 36);
+        let mut half = map.clone();
+        for y in 0..36 {
+            for x in 0..40 {
+                let right = map.data[y * 40 + (x + 1).min(39)];
+                half.data[y * 40 + x] = 0.5 * (map.data[y * 40 + x] + right);
+            }
+        }
+        let space = Neighbourhoods::stacked(&[map, half], 6);
+        let (cols, rows): (Vec<usize>, Vec<usize>) = (
+            (0..6).map(|i| i * 2).collect(),
+            (0..5).map(|i| i * 2).collect(),
+        );
+        let len = space.vector_len();
+        let mut queries = vec![0.0; cols.len() * rows.len() * len];
+        for (j, &y) in rows.iter().enumerate() {
+            for (i, &x) in cols.iter().enumerate() {
+                let k = j * cols.len() + i;
+                let source = space.in_copy(1, Pos::new(x + 14, y + 11));
+                space.copy_to(source, &mut queries[k * len..(k + 1) * len]);
+            }
+        }
+        let mut rng = Rng::new(5);
+        let mut matches: Vec<Pos> = (0..30)
+            .map(|_| space.clamp(rng.below(35).into(), rng.below(31).into()))
+            .collect();
+        let run = |matches: &mut Vec<Pos>, rng: &mut Rng| {
+            let mut distances = vec![f32::INFINITY; 30];
+            improve(
+                &space,
+                &mut Stored {
+                    values: &queries,
+                    weights: None,
+                    len,
+                },
+                &Objective::default(),
+                QueryGrid {
+                    cols: &cols,
+                    rows: &rows,
+                },
+                matches,
+                &mut distances,
+                4,
+                rng,
+            );
+            distances
+        };
+        let alone = run(&mut matches.clone(), &mut rng);
+        assert!(
+            alone.iter().all(|&d| d > 1e-6),
+            "no exact match in the first copy"
+        );
+        matches[0] = space.in_copy(1, Pos::new(14, 11));
+        let distances = run(&mut matches, &mut rng);
+        let (_, ny) = space.extent();
+        for (k, (&m, &d)) in matches.iter().zip(&distances).enumerate() {
+            let (copy, local) = space.copy_of(m);
+            assert!((local.y as usize) < ny, "node {k} straddles: {m:?}");
+            assert!(copy == 1 && d < 1e-9, "node {k}: {m:?} at {d}");
         }
     }
 
