@@ -90,6 +90,31 @@ fn flows_can_be_fields_combinations_and_time_varying() {
 }
 
 #[wasm_bindgen_test]
+fn sub_pixel_matches_are_an_option() {
+    // A quarter pixel per frame: both kinds of match run; the option takes booleans only.
+    let ex = Exemplar::from_bytes(GRASS_64).unwrap();
+    let field: JsValue = Float32Array::from([0.25f32, 0.0].repeat(40 * 32).as_slice()).into();
+    let with = |sub_pixel: JsValue| {
+        options(&[
+            ("outputWidth", 40.into()),
+            ("outputHeight", 32.into()),
+            ("frames", 3.into()),
+            ("flow", field.clone()),
+            ("subPixel", sub_pixel),
+        ])
+    };
+    for sub_pixel in [true, false] {
+        let mut anim = FlowAnimation::new(&ex, with(sub_pixel.into())).unwrap();
+        while !anim.done() {
+            anim.step().unwrap();
+        }
+        assert_eq!(anim.flow_energy_history().length(), 3);
+    }
+    let msg = error_message(FlowAnimation::new(&ex, with("yes".into())));
+    assert!(msg.contains("subPixel"), "{msg}");
+}
+
+#[wasm_bindgen_test]
 fn bad_flows_and_options_are_named_errors() {
     let ex = Exemplar::from_bytes(GRASS_64).unwrap();
     let short = Float32Array::from(vec![0.0f32; 10].as_slice());

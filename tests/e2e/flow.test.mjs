@@ -49,6 +49,32 @@ test('the flow panel animates, compares with the naive warp and records a WebM',
   assert.deepEqual(errors, []);
 });
 
+test('the sub-pixel box reaches the animation: the same seed makes other frames', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-panel="flow"]');
+  await page.click('button[data-sample="grass_64"]');
+  await page.waitForSelector('body[data-exemplar="grass 64×64"]');
+  await page.fill('#out-width', '64');
+  await page.fill('#out-height', '64');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.fill('#fl-frames', '3');
+  await page.dispatchEvent('#fl-frames', 'change');
+  const lastFrame = async (subPixel) => {
+    await page.setChecked('#fl-subpixel', subPixel);
+    await page.dispatchEvent('#fl-subpixel', 'change');
+    await page.evaluate(() => { delete document.body.dataset.flowDone; });
+    await page.click('#run');
+    await page.waitForSelector('body[data-flow-done="true"]', { timeout: 120_000 });
+    assert.equal(await page.getAttribute('body', 'data-flow-frames'), '3');
+    return canvasPixels(page, 'output-canvas');
+  };
+  const whole = await lastFrame(false);
+  const sub = await lastFrame(true);
+  assert.equal(sub.length, 64 * 64 * 4);
+  assert.notDeepEqual(sub, whole, 'sub-pixel matches change the frames');
+  assert.deepEqual(errors, []);
+});
+
 test('painting on a finished texture optimisation pulls it toward the paint', async () => {
   const { page, errors } = demo;
   const redness = await finishedOptimizationForPaint(page);

@@ -410,6 +410,8 @@ export interface FlowAnimationOptions {
   tileable?: boolean;
   /** As for TextureOptimization. Default: 1. */
   histogramMatching?: number;
+  /** Matches at half-pixel precision: flows slower than half a pixel per frame move the texture (with whole-pixel matches they do not), for slightly softer frames. Default: false. */
+  subPixel?: boolean;
   /** Default: a vortex of strength 2. */
   flow?: Flow;
 }

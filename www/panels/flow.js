@@ -42,6 +42,7 @@ const OPTIONS_HTML = `
   <label title="pixels per frame at half the frame's shorter side">strength <input id="fl-strength" type="number" value="2" min="0" max="16" step="0.5"></label>
   <label title="weight of the flow term: higher follows the flow more closely, lower keeps the texture sharper">λ <input id="fl-lambda" type="number" value="0.2" min="0" max="100" step="0.05"></label>
   <label>frames <input id="fl-frames" type="number" value="60" min="2" max="600" step="1"></label>
+  <label title="match at half-pixel precision: content carried along the flow keeps its fraction of a pixel, so a flow slower than half a pixel per frame (the vortex's centre) moves the texture; a little softer, and under fast turns some textures lose more detail"><input id="fl-subpixel" type="checkbox"> sub-pixel</label>
   <label title="stop after each half of an EM iteration: the E-step's frame, then the M-step's matches, beside the warped previous frame"><input id="fl-anatomy-on" class="view" type="checkbox"> step anatomy</label>
   <button id="fl-record" type="button" class="view">Record WebM</button>
   <a id="fl-download" hidden download="texsynth-flow.webm">download video</a>`;
@@ -93,6 +94,7 @@ export function createPanel(ui) {
       seed: ui.seed(),
       lambda: Number(ui.$('fl-lambda').value),
       frames: Number(ui.$('fl-frames').value),
+      subPixel: ui.$('fl-subpixel').checked,
       flow: spec(),
     };
   }

@@ -20,7 +20,12 @@ pub const METHOD: &str = "flow animation";
 /// The working set of the frames after frame 0 (frame 0's synthesis is estimated by
 /// [`crate::methods::optimization::memory::working_set`]); `fields`: flow fields the caller gave.
 #[must_use]
-pub fn frames_working_set(options: &FlowOptions, channels: usize, fields: usize) -> WorkingSet {
+pub fn frames_working_set(
+    options: &FlowOptions,
+    channels: usize,
+    fields: usize,
+    exemplar_pixels: usize,
+) -> WorkingSet {
     let (w, h) = (options.output_width, options.output_height);
     let n = w as u64 * h as u64;
     let c = channels as u64;
@@ -40,6 +45,14 @@ pub fn frames_working_set(options: &FlowOptions, channels: usize, fields: usize)
         .with("grid nodes", nodes * 32)
         .with("M-step feature map", frame)
         .with("E-step accumulators", n * (1 + c) * 4);
+    if options.sub_pixel {
+        // Per frame size: the exemplar's four half-pixel copies, stacked as an image for the
+        // E-step and as a feature map for the searches.
+        set.add(
+            "sub-pixel exemplar copies",
+            2 * 4 * exemplar_pixels as u64 * c * 4 * options.frame_sizes.len() as u64,
+        );
+    }
     if options.histogram_matching > 0.0 {
         set.add(
             "histogram matching",
@@ -80,5 +93,30 @@ mod tests {
                 && e.contains("memory budget of 256 MiB"),
             "{e}"
         );
+    }
+
+    #[test]
+    fn sub_pixel_copies_of_a_large_exemplar_count_against_the_budget() {
+        let flow = || {
+            FlowSource::Generator(
+                FlowSpec::new(vec![Component::new(FlowKind::Vortex, 1.0)]).unwrap(),
+            )
+        };
+        let exemplar = noise(1024, 1024, 3, 2);
+        let make = |sub_pixel| {
+            let options = FlowOptions {
+                output_width: 128,
+                output_height: 128,
+                memory_budget_mib: 256,
+                sub_pixel,
+                ..FlowOptions::default()
+            };
+            FlowSession::new(&exemplar, flow(), options)
+        };
+        // Whole-pixel frames fit; four copies of a million-pixel exemplar per frame size
+        // (as image and as feature map: 3 x 96 MiB) do not.
+        assert!(make(false).is_ok());
+        let e = make(true).err().unwrap().to_string();
+        assert!(e.contains("memory budget of 256 MiB"), "{e}");
     }
 }

@@ -133,7 +133,13 @@ impl FlowSession {
             FlowSource::Generator(_) => 0,
         };
         let (w, h) = (options.output_width, options.output_height);
-        frames_working_set(&options, exemplar.channels(), fields).check(
+        frames_working_set(
+            &options,
+            exemplar.channels(),
+            fields,
+            exemplar.pixel_count(),
+        )
+        .check(
             &format!("frames {w}x{h}"),
             METHOD,
             options.memory_budget_mib,
@@ -160,11 +166,10 @@ impl FlowSession {
                     energy: crate::methods::optimization::Energy::Pixels,
                     wavelet_detail_weight: 0.0,
                 };
-                let solver = LevelSolver::new(exemplar, setup, &mut rng);
                 if options.sub_pixel {
-                    solver.with_sub_pixel(exemplar, &mut rng)
+                    LevelSolver::with_sub_pixel_matches(exemplar, setup, &mut rng)
                 } else {
-                    solver
+                    LevelSolver::new(exemplar, setup, &mut rng)
                 }
             })
             .collect();
@@ -203,7 +208,12 @@ impl FlowSession {
             FlowSource::Fields(f) => f.len(),
             FlowSource::Generator(_) => 0,
         };
-        let frames = frames_working_set(&self.options, self.exemplar.channels(), fields);
+        let frames = frames_working_set(
+            &self.options,
+            self.exemplar.channels(),
+            fields,
+            self.exemplar.pixel_count(),
+        );
         let e = &self.exemplar;
         let opts = self.options.first_frame();
         let first = optimization::schedule::plan(e.width(), e.height(), &opts).map(|levels| {

@@ -127,6 +127,21 @@ pub struct LevelSolver {
 impl LevelSolver {
     /// A level over `exemplar` (this level's resolution of it) with a random match per node.
     pub fn new(exemplar: &Image, setup: LevelSetup, rng: &mut Rng) -> Self {
+        Self::build(exemplar, setup, false, rng)
+    }
+
+    /// A level whose matches have half-pixel precision (see [`phases`]): the searches run over
+    /// the exemplar moved by each phase, and carrying matches along a flow keeps their
+    /// fractions. For flow frames (pixel energies only).
+    pub fn with_sub_pixel_matches(exemplar: &Image, setup: LevelSetup, rng: &mut Rng) -> Self {
+        debug_assert!(
+            setup.energy.wavelet().is_none(),
+            "flow frames compare pixels"
+        );
+        Self::build(exemplar, setup, true, rng)
+    }
+
+    fn build(exemplar: &Image, setup: LevelSetup, sub_pixel: bool, rng: &mut Rng) -> Self {
         let map = feature_map(exemplar, setup.mu, Edge::Clamp);
         let wavelet = setup.energy.wavelet().map(|w| {
             WaveletEnergy::new(
@@ -140,7 +155,13 @@ impl LevelSolver {
         let mut wavelet_scratch = vec![0.0; setup.size];
         // With a wavelet energy every exemplar neighbourhood is transformed once here, and the
         // searches compare transformed vectors (one code path for all three searches).
+        let mut stacked = None;
         let space = match &wavelet {
+            None if sub_pixel => {
+                let (copies, image) = phases::stacked_exemplar(exemplar);
+                stacked = Some(image);
+                Neighbourhoods::stacked(&phases::copy_maps(&copies, setup.mu), setup.size)
+            }
             None => Neighbourhoods::new(map, setup.size),
             Some(e) => {
                 Neighbourhoods::transformed(map, setup.size, e.weights().to_vec(), |v, out| {
@@ -157,7 +178,7 @@ impl LevelSolver {
             .map(|_| Pos::new(rng.index(ex_nx), rng.index(ex_ny)))
             .collect();
         let len = matcher.space().vector_len();
-        LevelSolver {
+        let mut solver = LevelSolver {
             falloff: gaussian_falloff(setup.size, 1),
             distances: vec![f32::INFINITY; nodes],
             pixel_distances: if wavelet.is_some() {
@@ -182,25 +203,12 @@ impl LevelSolver {
             cols,
             rows,
             matches,
-            stacked: None,
+            stacked,
             offsets: Vec::new(),
             local_matches: Vec::new(),
-        }
-    }
-
-    /// Matches at half-pixel precision (see [`phases`]): the searches run over the exemplar
-    /// moved by each phase, and carrying matches along a flow keeps their fractions. For flow
-    /// frames; `exemplar` is the one the level was made with.
-    #[must_use]
-    pub fn with_sub_pixel(mut self, exemplar: &Image, rng: &mut Rng) -> Self {
-        debug_assert!(self.wavelet.is_none(), "flow frames compare pixels");
-        let (copies, stacked) = phases::stacked_exemplar(exemplar);
-        let space =
-            Neighbourhoods::stacked(&phases::copy_maps(&copies, self.setup.mu), self.setup.size);
-        self.matcher = Matcher::over(space, self.setup.search, rng).with_passes(self.setup.passes);
-        self.stacked = Some(stacked);
-        self.local_matches = self.matches.clone();
-        self
+        };
+        solver.refresh_local();
+        solver
     }
 
     /// The exemplar position of every match (its copy taken off).

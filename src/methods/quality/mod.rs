@@ -79,7 +79,8 @@ pub fn sub_pixel_coherence(exemplar: &Image, output: &Image) -> Result<f64> {
 
 /// Mean over the patches of `from` (stride 2) of the per-value MSE to the nearest patch of `to`.
 fn directed(from: &Image, to: &Image) -> f64 {
-    directed_to_any(from, std::slice::from_ref(to))
+    let index = PatchIndex::new(to.data(), to.width(), to.height(), PATCH);
+    mean_over_patches(from, |x, y| index.nearest(from.data(), from.width(), x, y))
 }
 
 /// [`directed`] to the nearest patch of any of `to`.
@@ -88,15 +89,21 @@ fn directed_to_any(from: &Image, to: &[Image]) -> f64 {
         .iter()
         .map(|t| PatchIndex::new(t.data(), t.width(), t.height(), PATCH))
         .collect();
+    mean_over_patches(from, |x, y| {
+        indexes
+            .iter()
+            .map(|i| i.nearest(from.data(), from.width(), x, y))
+            .fold(f32::INFINITY, f32::min)
+    })
+}
+
+/// The mean over the patches of `image` (stride 2) of `distance(x, y)` per value.
+fn mean_over_patches(image: &Image, distance: impl Fn(usize, usize) -> f32) -> f64 {
     let values = (PATCH * PATCH * 3) as f64;
     let (mut total, mut count) = (0.0f64, 0usize);
-    for y in (0..=from.height() - PATCH).step_by(STRIDE) {
-        for x in (0..=from.width() - PATCH).step_by(STRIDE) {
-            let nearest = indexes
-                .iter()
-                .map(|i| i.nearest(from.data(), from.width(), x, y))
-                .fold(f32::INFINITY, f32::min);
-            total += f64::from(nearest) / values;
+    for y in (0..=image.height() - PATCH).step_by(STRIDE) {
+        for x in (0..=image.width() - PATCH).step_by(STRIDE) {
+            total += f64::from(distance(x, y)) / values;
             count += 1;
         }
     }
