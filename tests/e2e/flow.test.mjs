@@ -3,7 +3,7 @@
 // soft-constraint demo: paint on a finished texture optimisation and the synthesis follows.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { canvasPixels, finishedOptimizationForPaint, openDemo, RESULTS } from './harness.mjs';
+import { canvasPixels, finishedOptimizationForPaint, openDemo, openPanel, RESULTS } from './harness.mjs';
 
 let demo;
 before(async () => {
@@ -13,12 +13,7 @@ after(async () => demo?.close());
 
 test('the flow panel animates, compares with the naive warp and records a WebM', async () => {
   const { page, errors } = demo;
-  await page.click('button[data-panel="flow"]');
-  await page.click('button[data-sample="grass_64"]');
-  await page.waitForSelector('body[data-exemplar="grass 64×64"]');
-  await page.fill('#out-width', '96');
-  await page.fill('#out-height', '96');
-  await page.dispatchEvent('#out-height', 'change');
+  await openPanel(page, 'flow', 'grass_64', 96);
   await page.fill('#fl-frames', '10');
   await page.dispatchEvent('#fl-frames', 'change');
   await page.selectOption('#fl-flow', 'whirlpool');
@@ -51,12 +46,7 @@ test('the flow panel animates, compares with the naive warp and records a WebM',
 
 test('the sub-pixel box reaches the animation: the same seed makes other frames', async () => {
   const { page, errors } = demo;
-  await page.click('button[data-panel="flow"]');
-  await page.click('button[data-sample="grass_64"]');
-  await page.waitForSelector('body[data-exemplar="grass 64×64"]');
-  await page.fill('#out-width', '64');
-  await page.fill('#out-height', '64');
-  await page.dispatchEvent('#out-height', 'change');
+  await openPanel(page, 'flow', 'grass_64', 64);
   await page.fill('#fl-frames', '3');
   await page.dispatchEvent('#fl-frames', 'change');
   const lastFrame = async (subPixel) => {

@@ -154,26 +154,30 @@ mod tests {
         }
     }
 
+    /// A grid of `nodes` (columns, rows) two pixels apart, and its queries cut from the space
+    /// at `source(x, y)` of each node's corner.
+    fn cut_queries(
+        space: &Neighbourhoods,
+        nodes: (usize, usize),
+        source: impl Fn(usize, usize) -> Pos,
+    ) -> (Vec<usize>, Vec<usize>, Vec<f32>) {
+        let cols: Vec<usize> = (0..nodes.0).map(|i| i * 2).collect();
+        let rows: Vec<usize> = (0..nodes.1).map(|i| i * 2).collect();
+        let len = space.vector_len();
+        let mut queries = vec![0.0; cols.len() * rows.len() * len];
+        for (k, out) in queries.chunks_exact_mut(len).enumerate() {
+            space.copy_to(source(cols[k % nodes.0], rows[k / nodes.0]), out);
+        }
+        (cols, rows, queries)
+    }
+
     #[test]
     fn recovers_a_shifted_copy_exactly_like_exact_search() {
         // The output is a crop of the exemplar: every query has a zero-distance match, and
         // propagation should carry one lucky hit across the whole grid.
         let space = Neighbourhoods::new(exemplar(48, 40), 6);
-        let (cols, rows): (Vec<usize>, Vec<usize>) = (
-            (0..8).map(|i| i * 2).collect(),
-            (0..6).map(|i| i * 2).collect(),
-        );
+        let (cols, rows, queries) = cut_queries(&space, (8, 6), |x, y| Pos::new(x + 20, y + 15));
         let len = space.vector_len();
-        let mut queries = vec![0.0; cols.len() * rows.len() * len];
-        for (j, &y) in rows.iter().enumerate() {
-            for (i, &x) in cols.iter().enumerate() {
-                let k = j * cols.len() + i;
-                space.copy_to(
-                    Pos::new(x + 20, y + 15),
-                    &mut queries[k * len..(k + 1) * len],
-                );
-            }
-        }
         let mut rng = Rng::new(9);
         let mut matches: Vec<Pos> = (0..48)
             .map(|_| space.clamp(rng.below(43).into(), rng.below(35).into()))
@@ -225,19 +229,10 @@ mod tests {
             }
         }
         let space = Neighbourhoods::stacked(&[map, half], 6);
-        let (cols, rows): (Vec<usize>, Vec<usize>) = (
-            (0..6).map(|i| i * 2).collect(),
-            (0..5).map(|i| i * 2).collect(),
-        );
+        let (cols, rows, queries) = cut_queries(&space, (6, 5), |x, y| {
+            space.in_copy(1, Pos::new(x + 14, y + 11))
+        });
         let len = space.vector_len();
-        let mut queries = vec![0.0; cols.len() * rows.len() * len];
-        for (j, &y) in rows.iter().enumerate() {
-            for (i, &x) in cols.iter().enumerate() {
-                let k = j * cols.len() + i;
-                let source = space.in_copy(1, Pos::new(x + 14, y + 11));
-                space.copy_to(source, &mut queries[k * len..(k + 1) * len]);
-            }
-        }
         let mut rng = Rng::new(5);
         let mut matches: Vec<Pos> = (0..30)
             .map(|_| space.clamp(rng.below(35).into(), rng.below(31).into()))
