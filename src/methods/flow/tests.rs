@@ -4,6 +4,7 @@ use super::*;
 use crate::core::testing::{noise, sample};
 use crate::core::{Edge, Image};
 use crate::methods::quality::quality;
+use crate::solvers::nn::Search;
 
 fn vortex(strength: f32) -> FlowSource {
     FlowSource::Generator(FlowSpec::new(vec![Component::new(FlowKind::Vortex, strength)]).unwrap())
@@ -278,6 +279,27 @@ fn a_slow_flow_moves_the_texture_only_with_sub_pixel_matches() {
         (6..=9).contains(&sub),
         "sub-pixel matches: moved {sub} half pixels of 7.5"
     );
+}
+
+#[test]
+fn sub_pixel_matches_run_with_every_search() {
+    // The stacked copies are one neighbourhood space for the tree and exact searches too: every
+    // match stays inside one copy, and the frames are finite.
+    let exemplar = sample("grass_64");
+    for search in [Search::KMeansTree, Search::Exact] {
+        let opts = FlowOptions {
+            output_width: 32,
+            output_height: 32,
+            frames: 3,
+            frame_sizes: vec![8],
+            search,
+            sub_pixel: true,
+            ..FlowOptions::default()
+        };
+        let (frames, ..) = animate(&exemplar, vortex(1.0), opts);
+        assert_eq!(frames.len(), 3);
+        assert!(frames[2].data().iter().all(|v| v.is_finite()), "{search:?}");
+    }
 }
 
 #[test]
