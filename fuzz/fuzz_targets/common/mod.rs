@@ -174,6 +174,7 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                 tileable: u.arbitrary()?,
                 histogram_matching: real(u, 1.0, v)?,
                 memory_budget_mib: BUDGET_MIB,
+                sub_pixel: u.arbitrary()?,
             };
             if let Ok(mut s) = FlowSession::new(ex, FlowSource::Generator(spec), o) {
                 for _ in 0..steps {
