@@ -57,6 +57,9 @@ pub struct Sums {
     v_weight: Vec<f32>,
     h_diff: Vec<f32>,
     v_diff: Vec<f32>,
+    /// The fall-off repeated over the channels, `size * size * channels`: the colour sums of a
+    /// row run are then one element-wise loop over contiguous values (made on the first add).
+    falloff_channels: Vec<f32>,
 }
 
 impl Sums {
@@ -84,6 +87,7 @@ impl Sums {
             v_weight,
             h_diff,
             v_diff,
+            falloff_channels: Vec::new(),
         }
     }
 
@@ -100,8 +104,12 @@ impl Sums {
             v_weight,
             h_diff,
             v_diff,
+            falloff_channels,
             ..
         } = self;
+        if falloff_channels.len() != m.falloff.len() * c {
+            *falloff_channels = m.falloff.iter().flat_map(|&g| [g; 4][..c].to_vec()).collect();
+        }
         let nx = m.cols.len();
         for node in nodes {
             let (z, omega) = (m.matches[node], m.node_weights[node]);
@@ -121,10 +129,11 @@ impl Sums {
                     let i = y * w + x0;
                     let zi = zy * ew + z.x as usize + dx0;
                     let g = &falloff[dx0..dx0 + len];
+                    let row_start = (dy * m.size + dx0) * c;
                     accumulate(
-                        c,
                         omega,
                         g,
+                        &falloff_channels[row_start..row_start + len * c],
                         &ex[zi * c..(zi + len) * c],
                         &mut weight[i..i + len],
                         &mut colour[i * c..(i + len) * c],
@@ -216,35 +225,22 @@ impl Sums {
 }
 
 /// Adds one row run of a matched neighbourhood: `weight += omega g` and `colour += omega g z`
-/// per pixel. Specialised per channel count so that the channel loop unrolls.
+/// per pixel, `g_channels` being `g` repeated over the channels. Two element-wise loops over
+/// contiguous values, which vectorise (a loop over pixels with the channels inside did not).
 #[inline]
-fn accumulate(c: usize, omega: f32, g: &[f32], z: &[f32], weight: &mut [f32], colour: &mut [f32]) {
-    #[inline(always)]
-    fn run<const C: usize>(
-        omega: f32,
-        g: &[f32],
-        z: &[f32],
-        weight: &mut [f32],
-        colour: &mut [f32],
-    ) {
-        for (((gk, zk), wk), ck) in g
-            .iter()
-            .zip(z.chunks_exact(C))
-            .zip(weight.iter_mut())
-            .zip(colour.chunks_exact_mut(C))
-        {
-            let gw = omega * gk;
-            *wk += gw;
-            for k in 0..C {
-                ck[k] += gw * zk[k];
-            }
-        }
+fn accumulate(
+    omega: f32,
+    g: &[f32],
+    g_channels: &[f32],
+    z: &[f32],
+    weight: &mut [f32],
+    colour: &mut [f32],
+) {
+    for (wk, gk) in weight.iter_mut().zip(g) {
+        *wk += omega * gk;
     }
-    match c {
-        1 => run::<1>(omega, g, z, weight, colour),
-        2 => run::<2>(omega, g, z, weight, colour),
-        3 => run::<3>(omega, g, z, weight, colour),
-        _ => run::<4>(omega, g, z, weight, colour),
+    for ((ck, gk), zk) in colour.iter_mut().zip(g_channels).zip(z) {
+        *ck += omega * gk * zk;
     }
 }
 
