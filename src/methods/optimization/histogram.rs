@@ -166,20 +166,25 @@ impl SortedChannels {
                         // counts are powers of two (the usual sizes), within an ulp otherwise.
                         let to_quantile = m as f32 / n;
                         let (lo, scale) = (lo[k], scale[k]);
-                        let pixels = &mut data[range.start * stride..range.end * stride];
-                        for (p, px) in pixels.chunks_exact_mut(stride).enumerate() {
-                            if !free(range.start + p) {
-                                continue;
-                            }
-                            let v = &mut px[k];
+                        let rank = |v: &mut f32| {
                             let at = ((*v - lo) * scale).max(0.0);
-                            let b = (at as usize).min(BUCKETS - 1);
+                            let b = (at as u32).min(BUCKETS as u32 - 1) as usize;
                             let (below, upto) = (table[b], table[b + 1]);
                             let count = upto - below;
                             let within = (((at - b as f32) * count as f32) as u32).min(count - 1);
                             // The exemplar value at the same quantile (centre of the rank's bin).
-                            let q = (((below + within) as f32 + 0.5) * to_quantile) as usize;
-                            *v += strength * (target[q.min(m - 1)] - *v);
+                            let q = (((below + within) as f32 + 0.5) * to_quantile) as u32;
+                            *v += strength * (target[(q as usize).min(m - 1)] - *v);
+                        };
+                        let pixels = data[range.start * stride..range.end * stride]
+                            .chunks_exact_mut(stride)
+                            .map(|px| &mut px[k]);
+                        match fixed {
+                            None => pixels.for_each(rank),
+                            Some(f) => pixels
+                                .zip(&f[range.clone()])
+                                .filter(|(_, f)| **f <= 0.0)
+                                .for_each(|(v, _)| rank(v)),
                         }
                     }
                 }
