@@ -108,7 +108,11 @@ impl Sums {
             ..
         } = self;
         if falloff_channels.len() != m.falloff.len() * c {
-            *falloff_channels = m.falloff.iter().flat_map(|&g| [g; 4][..c].to_vec()).collect();
+            *falloff_channels = m
+                .falloff
+                .iter()
+                .flat_map(|&g| [g; 4][..c].to_vec())
+                .collect();
         }
         let nx = m.cols.len();
         for node in nodes {

@@ -95,4 +95,18 @@ impl Queries for GridQueries<'_> {
             );
         }
     }
+
+    fn in_place(&self, n: usize) -> Option<(&[f32], usize)> {
+        if self.wavelet.is_some() || self.constraint.is_some() {
+            return None;
+        }
+        let nx = self.cols.len();
+        let (x, y) = (self.cols[n % nx], self.rows[n / nx]);
+        let map = self.map;
+        if x + self.size > map.width || y + self.size > map.height {
+            return None; // wraps
+        }
+        let start = (y * map.width + x) * map.dims;
+        Some((&map.data[start..], map.width * map.dims))
+    }
 }

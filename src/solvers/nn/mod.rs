@@ -66,6 +66,13 @@ pub trait Queries {
     fn count(&self) -> usize;
     /// Writes query `n` into `query` (its values, and its weights when it has its own).
     fn fill(&mut self, n: usize, query: &mut Query);
+    /// Query `n` where it already lies, when it needs no copy (no weights of its own, no
+    /// transform, no wrapping): its values from its first row on, and the stride between rows.
+    /// Each pixel lies in 16 neighbourhoods at spacing w/4, so copying every query moved 16
+    /// times the output's feature map per sweep.
+    fn in_place(&self, _n: usize) -> Option<(&[f32], usize)> {
+        None
+    }
 }
 
 /// Queries stored one after another, `len` values each, with optional per-value weights laid
@@ -189,6 +196,24 @@ impl Objective<'_> {
             return extra;
         }
         extra + query.distance(space, pos, bound - extra)
+    }
+
+    /// [`Objective::cost`] of a query given as rows `stride` apart (see
+    /// [`Queries::in_place`]), under the space's weights.
+    #[inline]
+    #[must_use]
+    pub fn cost_in_place(
+        &self,
+        space: &Neighbourhoods,
+        (values, stride): (&[f32], usize),
+        pos: Pos,
+        bound: f32,
+    ) -> f32 {
+        let extra = self.penalty.map_or(0.0, |f| f(pos));
+        if extra > bound {
+            return extra;
+        }
+        extra + space.distance_strided(values, stride, space.weights(), pos, bound - extra)
     }
 }
 

@@ -379,20 +379,35 @@ impl Neighbourhoods {
     #[inline]
     #[must_use]
     pub fn distance_with(&self, query: &[f32], weights: &[f32], pos: Pos, bound: f32) -> f32 {
+        self.distance_strided(query, self.size * self.exemplar.dims, weights, pos, bound)
+    }
+
+    /// [`Neighbourhoods::distance_with`] for a query whose row `dy` starts at `dy * stride` of
+    /// `query`: a query read in place from a feature map as wide as `stride / dims` pixels.
+    #[inline]
+    #[must_use]
+    pub fn distance_strided(
+        &self,
+        query: &[f32],
+        stride: usize,
+        weights: &[f32],
+        pos: Pos,
+        bound: f32,
+    ) -> f32 {
+        let rows = (query, stride, weights);
         match self.size * self.exemplar.dims {
-            24 => self.rows_distance::<24>(query, weights, pos, bound),
-            48 => self.rows_distance::<48>(query, weights, pos, bound),
-            96 => self.rows_distance::<96>(query, weights, pos, bound),
-            _ => self.rows_distance::<0>(query, weights, pos, bound),
+            24 => self.rows_distance::<24>(rows, pos, bound),
+            48 => self.rows_distance::<48>(rows, pos, bound),
+            96 => self.rows_distance::<96>(rows, pos, bound),
+            _ => self.rows_distance::<0>(rows, pos, bound),
         }
     }
 
-    /// [`Neighbourhoods::distance_with`] over rows of `N` values (0: of any length).
+    /// [`Neighbourhoods::distance_strided`] over rows of `N` values (0: of any length).
     #[inline(always)]
     fn rows_distance<const N: usize>(
         &self,
-        query: &[f32],
-        weights: &[f32],
+        (query, stride, weights): (&[f32], usize, &[f32]),
         pos: Pos,
         bound: f32,
     ) -> f32 {
@@ -400,8 +415,8 @@ impl Neighbourhoods {
         let mut sum = 0.0;
         for dy in 0..self.size {
             let row = self.part(pos, dy);
-            let range = dy * row_len..(dy + 1) * row_len;
-            let (q, g) = (&query[range.clone()], &weights[range]);
+            let q = &query[dy * stride..dy * stride + row_len];
+            let g = &weights[dy * row_len..(dy + 1) * row_len];
             sum += if N == 0 {
                 weighted_ssd(q, row, g)
             } else {

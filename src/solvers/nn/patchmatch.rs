@@ -79,15 +79,21 @@ impl Search<'_> {
             let k = progress.next;
             let i = if forward { k } else { nx * ny - 1 - k };
             let (gx, gy) = (i % nx, i / nx);
-            queries.fill(i, &mut query);
-            if pass == 0 {
-                distances[i] = objective.cost(space, &query, matches[i], f32::INFINITY);
+            if queries.in_place(i).is_none() {
+                queries.fill(i, &mut query);
             }
-            let q = &query;
+            let in_place = queries.in_place(i);
+            let cost = |candidate: Pos, bound: f32| match in_place {
+                Some(rows) => objective.cost_in_place(space, rows, candidate, bound),
+                None => objective.cost(space, &query, candidate, bound),
+            };
+            if pass == 0 {
+                distances[i] = cost(matches[i], f32::INFINITY);
+            }
             let mut best = (matches[i], distances[i]);
             let consider = |candidate: Pos, best: &mut (Pos, f32)| {
                 if candidate != best.0 {
-                    let d = objective.cost(space, q, candidate, best.1);
+                    let d = cost(candidate, best.1);
                     if d < best.1 {
                         *best = (candidate, d);
                     }
