@@ -413,7 +413,12 @@ impl Neighbourhoods {
     ) -> f32 {
         let row_len = self.size * self.exemplar.dims;
         let mut sum = 0.0;
-        for dy in 0..self.size {
+        // Rows centre-out (half, half - 1, half + 1, ...): the fall-off weighs the centre rows
+        // most, so a poor candidate passes the bound in fewer rows (most are rejected within
+        // two or three).
+        let half = self.size / 2;
+        for i in 0..self.size {
+            let dy = if i % 2 == 0 { half + i / 2 } else { half - 1 - i / 2 };
             let row = self.part(pos, dy);
             let q = &query[dy * stride..dy * stride + row_len];
             let g = &weights[dy * row_len..(dy + 1) * row_len];
