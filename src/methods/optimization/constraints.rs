@@ -15,6 +15,7 @@
 //! `m` is the mask (0 = free, 1 = fully constrained; fractions soften stroke edges).
 
 use crate::core::{Error, Image, Result};
+use crate::solvers::nn::FeatureMap;
 
 /// Soft constraints at full output resolution, as the caller gave them.
 #[derive(Debug, Clone, PartialEq)]
@@ -133,6 +134,31 @@ pub struct QueryTerms {
 }
 
 impl QueryTerms {
+    /// Every query's values and gains at once, as maps like `map` (the output's feature map):
+    /// values `(x + lm c) / (1 + lm)` in the colour channels, and per value the factor its
+    /// fall-off weight takes, `1 + lm` for colours and 1 otherwise. A query read from them in
+    /// place equals one made by [`QueryTerms::apply`], to the bit, without a copy per node.
+    #[must_use]
+    pub fn in_place_map(&self, map: &FeatureMap) -> (FeatureMap, Vec<f32>) {
+        let (dims, c) = (map.dims, self.channels);
+        let mut values = map.clone();
+        let mut gains = vec![1.0f32; map.data.len()];
+        let pixels = values
+            .data
+            .chunks_exact_mut(dims)
+            .zip(gains.chunks_exact_mut(dims))
+            .zip(&self.gain)
+            .zip(&self.inverse)
+            .zip(self.pull.chunks_exact(c));
+        for ((((q, wt), &gain), &inverse), pull) in pixels {
+            for ((q, wt), &pull) in q.iter_mut().zip(wt.iter_mut()).zip(pull) {
+                *q = (*q + pull) * inverse;
+                *wt = gain;
+            }
+        }
+        (values, gains)
+    }
+
     /// Turns the gathered query of the neighbourhood at `(x0, y0)` (`size` wide, `dims` values
     /// per pixel of which the first `channels` are colour) and its weights into the constrained
     /// search: query `(x + lm c) / (1 + lm)`, weights `g (1 + lm)` (completing the square of

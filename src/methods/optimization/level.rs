@@ -64,8 +64,10 @@ struct MStepRun {
     map: FeatureMap,
     occurrence: Option<Occurrence>,
     progress: Progress,
-    /// The constraint's query terms, made at the first part that has a constraint.
+    /// The constraint's query terms, made at the first part that has a constraint, and every
+    /// query under them made at once (values and gains, to read queries in place).
     terms: Option<QueryTerms>,
+    constrained: Option<(FeatureMap, Vec<f32>)>,
 }
 
 /// An E-step under way: its IRLS weights, its sums, and the next node to add.
@@ -283,6 +285,7 @@ impl LevelSolver {
             occurrence,
             progress: self.matcher.progress(self.matches.len()),
             terms: None,
+            constrained: None,
         });
     }
 
@@ -339,17 +342,26 @@ impl LevelSolver {
         );
         let constraint = constraint.filter(|_| self.wavelet.is_none());
         if let (Some(c), None) = (constraint, &run.terms) {
-            run.terms = Some(c.query_terms());
+            let terms = c.query_terms();
+            run.constrained = Some(terms.in_place_map(&run.map));
+            run.terms = Some(terms);
         }
         let map = &run.map;
         let terms = run.terms.as_ref().filter(|_| constraint.is_some());
+        let constrained = run
+            .constrained
+            .as_ref()
+            .filter(|_| terms.is_some())
+            .map(|(map, gains)| (map, &gains[..]));
         let plain = || {
             GridQueries::new(map, (&self.cols, &self.rows), size, wrap)
                 .transformed(self.wavelet.as_ref())
         };
         let before = run.progress.visits();
         let done = self.matcher.resume(
-            &mut plain().constrained(terms, space.weights()),
+            &mut plain()
+                .constrained(terms, space.weights())
+                .constrained_in_place(constrained),
             &objective,
             grid,
             (&mut self.matches, &mut self.objective),

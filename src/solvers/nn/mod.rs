@@ -6,7 +6,7 @@ pub mod kmeans_tree;
 pub mod patches;
 pub mod patchmatch;
 
-pub use patches::{FeatureMap, Neighbourhoods, Pos};
+pub use patches::{FeatureMap, InPlace, Neighbourhoods, Pos};
 
 /// One query being searched for: its values and, when it carries weights of its own (soft
 /// constraints weigh constrained pixels more, Kwatra et al. 2005 section 4), those; otherwise
@@ -66,11 +66,10 @@ pub trait Queries {
     fn count(&self) -> usize;
     /// Writes query `n` into `query` (its values, and its weights when it has its own).
     fn fill(&mut self, n: usize, query: &mut Query);
-    /// Query `n` where it already lies, when it needs no copy (no weights of its own, no
-    /// transform, no wrapping): its values from its first row on, and the stride between rows.
+    /// Query `n` where it already lies, when it needs no copy (no transform, no wrapping).
     /// Each pixel lies in 16 neighbourhoods at spacing w/4, so copying every query moved 16
     /// times the output's feature map per sweep.
-    fn in_place(&self, _n: usize) -> Option<(&[f32], usize)> {
+    fn in_place(&self, _n: usize) -> Option<InPlace<'_>> {
         None
     }
 }
@@ -198,14 +197,13 @@ impl Objective<'_> {
         extra + query.distance(space, pos, bound - extra)
     }
 
-    /// [`Objective::cost`] of a query given as rows `stride` apart (see
-    /// [`Queries::in_place`]), under the space's weights.
+    /// [`Objective::cost`] of a query read in place (see [`Queries::in_place`]).
     #[inline]
     #[must_use]
     pub fn cost_in_place(
         &self,
         space: &Neighbourhoods,
-        (values, stride): (&[f32], usize),
+        query: InPlace<'_>,
         pos: Pos,
         bound: f32,
     ) -> f32 {
@@ -213,7 +211,7 @@ impl Objective<'_> {
         if extra > bound {
             return extra;
         }
-        extra + space.distance_strided(values, stride, space.weights(), pos, bound - extra)
+        extra + space.distance_in_place(query, space.weights(), pos, bound - extra)
     }
 }
 

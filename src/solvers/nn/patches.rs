@@ -87,18 +87,58 @@ pub fn weighted_ssd(a: &[f32], b: &[f32], g: &[f32]) -> f32 {
     sum
 }
 
-/// [`weighted_ssd`] of exactly `N` values, `N` a multiple of 8: the same sums in the same
-/// order, fully unrolled.
+/// `sum (g_k G_k) (a_k - b_k)^2`: [`weighted_ssd`] under the weights `g` scaled value by value
+/// by the gains `G` (a soft constraint's `1 + lambda m` per pixel, read in place), the products
+/// formed as a query's own weights would be.
+#[inline]
+#[must_use]
+pub fn gained_weighted_ssd(a: &[f32], b: &[f32], g: &[f32], gains: &[f32]) -> f32 {
+    debug_assert!(a.len() == b.len() && a.len() == g.len() && a.len() == gains.len());
+    let mut acc = [0.0f32; 8];
+    let chunks = a.len() / 8 * 8;
+    for (((ca, cb), cg), cw) in a[..chunks]
+        .chunks_exact(8)
+        .zip(b[..chunks].chunks_exact(8))
+        .zip(g[..chunks].chunks_exact(8))
+        .zip(gains[..chunks].chunks_exact(8))
+    {
+        for k in 0..8 {
+            let d = ca[k] - cb[k];
+            acc[k] += cg[k] * cw[k] * d * d;
+        }
+    }
+    let mut sum = (acc[0] + acc[4]) + (acc[1] + acc[5]) + ((acc[2] + acc[6]) + (acc[3] + acc[7]));
+    for k in chunks..a.len() {
+        let d = a[k] - b[k];
+        sum += g[k] * gains[k] * d * d;
+    }
+    sum
+}
+
+/// [`weighted_ssd`] (or [`gained_weighted_ssd`]) of exactly `N` values, `N` a multiple of 8:
+/// the same sums in the same order, fully unrolled.
 #[inline(always)]
-fn fixed_weighted_ssd<const N: usize>(a: &[f32], b: &[f32], g: &[f32]) -> f32 {
+fn fixed_weighted_ssd<const N: usize>(
+    a: &[f32],
+    b: &[f32],
+    g: &[f32],
+    gains: Option<&[f32]>,
+) -> f32 {
     let (Ok(a), Ok(b), Ok(g)) = (
         <&[f32; N]>::try_from(a),
         <&[f32; N]>::try_from(b),
         <&[f32; N]>::try_from(g),
     ) else {
-        return weighted_ssd(a, b, g);
+        return match gains {
+            Some(gains) => gained_weighted_ssd(a, b, g, gains),
+            None => weighted_ssd(a, b, g),
+        };
     };
-    lanes::weighted_ssd(a, b, g)
+    match gains.map(<&[f32; N]>::try_from) {
+        None => lanes::weighted_ssd(a, b, g, None),
+        Some(Ok(gains)) => lanes::weighted_ssd(a, b, g, Some(gains)),
+        Some(Err(_)) => gained_weighted_ssd(a, b, g, gains.unwrap_or_default()),
+    }
 }
 
 /// The eight accumulators of [`weighted_ssd`] as two 128-bit vectors where wasm has them: the
@@ -117,14 +157,23 @@ mod lanes {
     }
 
     #[inline(always)]
-    pub fn weighted_ssd<const N: usize>(a: &[f32; N], b: &[f32; N], g: &[f32; N]) -> f32 {
+    pub fn weighted_ssd<const N: usize>(
+        a: &[f32; N],
+        b: &[f32; N],
+        g: &[f32; N],
+        gains: Option<&[f32; N]>,
+    ) -> f32 {
+        let weight = |at: usize| match gains {
+            Some(gains) => f32x4_mul(load(g, at), load(gains, at)),
+            None => load(g, at),
+        };
         let (mut low, mut high) = (f32x4_splat(0.0), f32x4_splat(0.0));
         for c in 0..N / 8 {
             let (i, j) = (c * 8, c * 8 + 4);
             let d = f32x4_sub(load(a, i), load(b, i));
-            low = f32x4_add(low, f32x4_mul(f32x4_mul(load(g, i), d), d));
+            low = f32x4_add(low, f32x4_mul(f32x4_mul(weight(i), d), d));
             let d = f32x4_sub(load(a, j), load(b, j));
-            high = f32x4_add(high, f32x4_mul(f32x4_mul(load(g, j), d), d));
+            high = f32x4_add(high, f32x4_mul(f32x4_mul(weight(j), d), d));
         }
         let s = f32x4_add(low, high);
         (f32x4_extract_lane::<0>(s) + f32x4_extract_lane::<1>(s))
@@ -135,16 +184,33 @@ mod lanes {
 #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
 mod lanes {
     #[inline(always)]
-    pub fn weighted_ssd<const N: usize>(a: &[f32; N], b: &[f32; N], g: &[f32; N]) -> f32 {
+    pub fn weighted_ssd<const N: usize>(
+        a: &[f32; N],
+        b: &[f32; N],
+        g: &[f32; N],
+        gains: Option<&[f32; N]>,
+    ) -> f32 {
         let mut acc = [0.0f32; 8];
         for c in 0..N / 8 {
             for k in 0..8 {
-                let d = a[c * 8 + k] - b[c * 8 + k];
-                acc[k] += g[c * 8 + k] * d * d;
+                let i = c * 8 + k;
+                let d = a[i] - b[i];
+                let weight = gains.map_or(g[i], |gains| g[i] * gains[i]);
+                acc[k] += weight * d * d;
             }
         }
         (acc[0] + acc[4]) + (acc[1] + acc[5]) + ((acc[2] + acc[6]) + (acc[3] + acc[7]))
     }
+}
+
+/// A query read where it lies instead of copied: row `dy` of its values is
+/// `values[dy * stride..]` (a feature map `stride / dims` pixels wide), and its weights are the
+/// space's fall-off scaled by `gains` where given (laid out like `values`).
+#[derive(Debug, Clone, Copy)]
+pub struct InPlace<'a> {
+    pub values: &'a [f32],
+    pub gains: Option<&'a [f32]>,
+    pub stride: usize,
 }
 
 /// All `size` x `size` neighbourhoods of an exemplar feature map, addressed by top-left corner.
@@ -379,53 +445,62 @@ impl Neighbourhoods {
     #[inline]
     #[must_use]
     pub fn distance_with(&self, query: &[f32], weights: &[f32], pos: Pos, bound: f32) -> f32 {
-        self.distance_strided(query, self.size * self.exemplar.dims, weights, pos, bound)
+        let query = InPlace {
+            values: query,
+            gains: None,
+            stride: self.size * self.exemplar.dims,
+        };
+        self.distance_in_place(query, weights, pos, bound)
     }
 
-    /// [`Neighbourhoods::distance_with`] for a query whose row `dy` starts at `dy * stride` of
-    /// `query`: a query read in place from a feature map as wide as `stride / dims` pixels.
+    /// [`Neighbourhoods::distance_with`] for a query read in place (see [`InPlace`]).
     #[inline]
     #[must_use]
-    pub fn distance_strided(
+    pub fn distance_in_place(
         &self,
-        query: &[f32],
-        stride: usize,
+        query: InPlace<'_>,
         weights: &[f32],
         pos: Pos,
         bound: f32,
     ) -> f32 {
-        let rows = (query, stride, weights);
         match self.size * self.exemplar.dims {
-            24 => self.rows_distance::<24>(rows, pos, bound),
-            48 => self.rows_distance::<48>(rows, pos, bound),
-            96 => self.rows_distance::<96>(rows, pos, bound),
-            _ => self.rows_distance::<0>(rows, pos, bound),
+            24 => self.rows_distance::<24>(query, weights, pos, bound),
+            48 => self.rows_distance::<48>(query, weights, pos, bound),
+            96 => self.rows_distance::<96>(query, weights, pos, bound),
+            _ => self.rows_distance::<0>(query, weights, pos, bound),
         }
     }
 
-    /// [`Neighbourhoods::distance_strided`] over rows of `N` values (0: of any length).
+    /// [`Neighbourhoods::distance_in_place`] over rows of `N` values (0: of any length).
     #[inline(always)]
     fn rows_distance<const N: usize>(
         &self,
-        (query, stride, weights): (&[f32], usize, &[f32]),
+        query: InPlace<'_>,
+        weights: &[f32],
         pos: Pos,
         bound: f32,
     ) -> f32 {
         let row_len = self.size * self.exemplar.dims;
+        let stride = query.stride;
         let mut sum = 0.0;
         // Rows centre-out (half, half - 1, half + 1, ...): the fall-off weighs the centre rows
         // most, so a poor candidate passes the bound in fewer rows (most are rejected within
         // two or three).
         let half = self.size / 2;
         for i in 0..self.size {
-            let dy = if i % 2 == 0 { half + i / 2 } else { half - 1 - i / 2 };
-            let row = self.part(pos, dy);
-            let q = &query[dy * stride..dy * stride + row_len];
-            let g = &weights[dy * row_len..(dy + 1) * row_len];
-            sum += if N == 0 {
-                weighted_ssd(q, row, g)
+            let dy = if i % 2 == 0 {
+                half + i / 2
             } else {
-                fixed_weighted_ssd::<N>(q, row, g)
+                half - 1 - i / 2
+            };
+            let row = self.part(pos, dy);
+            let q = &query.values[dy * stride..dy * stride + row_len];
+            let g = &weights[dy * row_len..(dy + 1) * row_len];
+            let gains = query.gains.map(|v| &v[dy * stride..dy * stride + row_len]);
+            sum += match (N, gains) {
+                (0, None) => weighted_ssd(q, row, g),
+                (0, Some(gains)) => gained_weighted_ssd(q, row, g, gains),
+                _ => fixed_weighted_ssd::<N>(q, row, g, gains),
             };
             if sum > bound {
                 return sum;
