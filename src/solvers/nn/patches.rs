@@ -192,11 +192,11 @@ mod lanes {
     ) -> f32 {
         let mut acc = [0.0f32; 8];
         for c in 0..N / 8 {
-            for k in 0..8 {
+            for (k, sum) in acc.iter_mut().enumerate() {
                 let i = c * 8 + k;
                 let d = a[i] - b[i];
                 let weight = gains.map_or(g[i], |gains| g[i] * gains[i]);
-                acc[k] += weight * d * d;
+                *sum += weight * d * d;
             }
         }
         (acc[0] + acc[4]) + (acc[1] + acc[5]) + ((acc[2] + acc[6]) + (acc[3] + acc[7]))
