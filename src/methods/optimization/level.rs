@@ -332,9 +332,8 @@ impl LevelSolver {
             rows: &self.rows,
         };
         let occurrence = run.occurrence.as_ref();
-        let penalty = occurrence.map(|o| move |z: Pos| o.penalty(z));
         let objective = Objective {
-            penalty: penalty.as_ref().map(|f| f as &dyn Fn(Pos) -> f32),
+            penalty: occurrence.map(Occurrence::penalties),
         };
         debug_assert!(
             constraint.is_none() || self.wavelet.is_none(),

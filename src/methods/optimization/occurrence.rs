@@ -19,7 +19,7 @@
 //! within -4%..+16% and brings completeness 1.5-5x closer; full strength costs up to 50%
 //! coherence on grass_64 and gravel_64.
 
-use crate::solvers::nn::Pos;
+use crate::solvers::nn::{Penalties, Pos};
 
 /// The share of alpha used for an exemplar of `exemplar_area` pixels and an output of
 /// `output_area` (see the module notes).
@@ -133,7 +133,16 @@ impl Occurrence {
     #[inline]
     #[must_use]
     pub fn penalty(&self, z: Pos) -> f32 {
-        self.penalties[z.y as usize * self.columns + z.x as usize]
+        self.penalties().at(z)
+    }
+
+    /// Every candidate's penalty, for the search's objective.
+    #[must_use]
+    pub fn penalties(&self) -> Penalties<'_> {
+        Penalties {
+            values: &self.penalties,
+            columns: self.columns,
+        }
     }
 }
 

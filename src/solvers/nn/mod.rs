@@ -181,7 +181,24 @@ impl Progress {
 #[derive(Clone, Copy, Default)]
 pub struct Objective<'a> {
     /// A cost added for a candidate, whatever the query.
-    pub penalty: Option<&'a dyn Fn(Pos) -> f32>,
+    pub penalty: Option<Penalties<'a>>,
+}
+
+/// A cost per candidate position, `columns` per row: a table rather than a closure, so that the
+/// lookup inlines into the search loop (through a `dyn Fn` it was an indirect call per
+/// candidate).
+#[derive(Clone, Copy, Debug)]
+pub struct Penalties<'a> {
+    pub values: &'a [f32],
+    pub columns: usize,
+}
+
+impl Penalties<'_> {
+    #[inline]
+    #[must_use]
+    pub fn at(&self, z: Pos) -> f32 {
+        self.values[z.y as usize * self.columns + z.x as usize]
+    }
 }
 
 impl Objective<'_> {
@@ -190,7 +207,7 @@ impl Objective<'_> {
     #[inline]
     #[must_use]
     pub fn cost(&self, space: &Neighbourhoods, query: &Query, pos: Pos, bound: f32) -> f32 {
-        let extra = self.penalty.map_or(0.0, |f| f(pos));
+        let extra = self.penalty.map_or(0.0, |p| p.at(pos));
         if extra > bound {
             return extra;
         }
@@ -207,7 +224,7 @@ impl Objective<'_> {
         pos: Pos,
         bound: f32,
     ) -> f32 {
-        let extra = self.penalty.map_or(0.0, |f| f(pos));
+        let extra = self.penalty.map_or(0.0, |p| p.at(pos));
         if extra > bound {
             return extra;
         }
