@@ -9,7 +9,8 @@
 //! - the flow field of the frame, `8 N`, and every field the caller gave, `8 N` each;
 //! - one level per frame neighbourhood size, each with its histogram-matching scratch (`16 N`)
 //!   and its grid of matches (32 bytes per node);
-//! - an iteration's M-step feature map (`4c N`) and E-step accumulators (`4(1 + c) N`).
+//! - an iteration's M-step feature map (`4c N`), the constrained queries read in place from it
+//!   (values and weight gains, `8c N`), and the E-step accumulators (`4(1 + c) N`).
 
 use super::options::FlowOptions;
 use crate::core::budget::{WorkingSet, image_bytes};
@@ -44,6 +45,7 @@ pub fn frames_working_set(
         .with("flow field", n * 8 * (1 + fields as u64))
         .with("grid nodes", nodes * 32)
         .with("M-step feature map", frame)
+        .with("M-step constrained queries", 2 * frame)
         .with("E-step accumulators", n * (1 + c) * 4);
     if options.sub_pixel {
         // Per frame size: the exemplar's four half-pixel copies, stacked as an image for the

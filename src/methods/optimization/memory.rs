@@ -12,7 +12,8 @@
 //! - per node of the grid (spacing `w/4`): the match, distances and objective, 32 bytes;
 //! - the exemplar pyramid, its neighbourhood space and, with a wavelet energy, every exemplar
 //!   neighbourhood transformed (`count * w^2 * d * 4` bytes, for the largest level);
-//! - soft constraints, once set: the target and mask at full size and at the level's size.
+//! - soft constraints, once set: the target and mask at full size and at the level's size, and
+//!   the M-step's constrained queries (values and weight gains, `8d N`).
 //!
 //! The M-step's and E-step's buffers are not live at once, but the allocator does not always
 //! reuse a freed block for a larger one, so both are counted (measured in wasm: see the README's
@@ -69,6 +70,8 @@ pub fn working_set(
     }
     if constraints {
         set.add("soft constraints", 2 * n * (c64 + 1) * 4);
+        // The M-step's constrained queries, read in place: values and weight gains.
+        set.add("M-step constrained queries", 2 * n * d * 4);
     }
     set
 }
