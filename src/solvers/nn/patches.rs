@@ -334,6 +334,22 @@ impl Neighbourhoods {
         !self.transformed.is_empty()
     }
 
+    /// The vector at `pos` as rows: a slice from its first value and the stride between rows
+    /// (the exemplar map's row, or `row_len` when stored transformed).
+    #[inline]
+    fn rows_of(&self, pos: Pos) -> (&[f32], usize) {
+        let dims = self.exemplar.dims;
+        if self.transformed.is_empty() {
+            let width = self.exemplar.width;
+            let start = (pos.y as usize * width + pos.x as usize) * dims;
+            (&self.exemplar.data[start..], width * dims)
+        } else {
+            let nx = self.extent().0;
+            let start = (pos.y as usize * nx + pos.x as usize) * self.vector_len();
+            (&self.transformed[start..], self.size * dims)
+        }
+    }
+
     /// Values `dy * row_len .. (dy + 1) * row_len` of the vector at `pos`, with `row_len =
     /// size * dims` (a row of pixels, or a slice of the transformed vector).
     #[inline]
@@ -482,6 +498,8 @@ impl Neighbourhoods {
     ) -> f32 {
         let row_len = self.size * self.exemplar.dims;
         let stride = query.stride;
+        // The neighbourhood's rows as one slice and a stride, decided once rather than per row.
+        let (ex, ex_stride) = self.rows_of(pos);
         let mut sum = 0.0;
         // Rows centre-out (half, half - 1, half + 1, ...): the fall-off weighs the centre rows
         // most, so a poor candidate passes the bound in fewer rows (most are rejected within
@@ -493,7 +511,7 @@ impl Neighbourhoods {
             } else {
                 half - 1 - i / 2
             };
-            let row = self.part(pos, dy);
+            let row = &ex[dy * ex_stride..dy * ex_stride + row_len];
             let q = &query.values[dy * stride..dy * stride + row_len];
             let g = &weights[dy * row_len..(dy + 1) * row_len];
             let gains = query.gains.map(|v| &v[dy * stride..dy * stride + row_len]);
