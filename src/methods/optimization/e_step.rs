@@ -111,7 +111,7 @@ impl Sums {
             *falloff_channels = m
                 .falloff
                 .iter()
-                .flat_map(|&g| [g; 4][..c].to_vec())
+                .flat_map(|&g| std::iter::repeat_n(g, c))
                 .collect();
         }
         let nx = m.cols.len();
