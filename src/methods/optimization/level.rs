@@ -388,8 +388,14 @@ impl LevelSolver {
             // The IRLS weights and the reported energy are about the texture term alone.
             let mut queries = plain();
             for (n, d) in self.distances.iter_mut().enumerate() {
-                queries.fill(n, &mut query);
-                *d = query.distance(space, self.matches[n], f32::INFINITY);
+                let m = self.matches[n];
+                *d = match queries.in_place(n) {
+                    Some(rows) => space.distance_in_place(rows, space.weights(), m, f32::INFINITY),
+                    None => {
+                        queries.fill(n, &mut query);
+                        query.distance(space, m, f32::INFINITY)
+                    }
+                };
             }
         }
         if self.wavelet.is_some() {

@@ -67,24 +67,8 @@ pub fn gaussian_falloff(size: usize, dims: usize) -> Vec<f32> {
 #[must_use]
 pub fn weighted_ssd(a: &[f32], b: &[f32], g: &[f32]) -> f32 {
     debug_assert!(a.len() == b.len() && a.len() == g.len());
-    let mut acc = [0.0f32; 8];
-    let chunks = a.len() / 8 * 8;
-    for ((ca, cb), cg) in a[..chunks]
-        .chunks_exact(8)
-        .zip(b[..chunks].chunks_exact(8))
-        .zip(g[..chunks].chunks_exact(8))
-    {
-        for k in 0..8 {
-            let d = ca[k] - cb[k];
-            acc[k] += cg[k] * d * d;
-        }
-    }
-    let mut sum = (acc[0] + acc[4]) + (acc[1] + acc[5]) + ((acc[2] + acc[6]) + (acc[3] + acc[7]));
-    for k in chunks..a.len() {
-        let d = a[k] - b[k];
-        sum += g[k] * d * d;
-    }
-    sum
+    let g = &g[..a.len()];
+    ssd_weighted_by(a, b, |k| g[k])
 }
 
 /// `sum (g_k G_k) (a_k - b_k)^2`: [`weighted_ssd`] under the weights `g` scaled value by value
@@ -94,23 +78,30 @@ pub fn weighted_ssd(a: &[f32], b: &[f32], g: &[f32]) -> f32 {
 #[must_use]
 pub fn gained_weighted_ssd(a: &[f32], b: &[f32], g: &[f32], gains: &[f32]) -> f32 {
     debug_assert!(a.len() == b.len() && a.len() == g.len() && a.len() == gains.len());
+    let (g, gains) = (&g[..a.len()], &gains[..a.len()]);
+    ssd_weighted_by(a, b, |k| g[k] * gains[k])
+}
+
+/// The sum of both: eight accumulators over chunks of 8, then the tail, with the weight of
+/// value `k` given by `weight(k)`.
+#[inline(always)]
+fn ssd_weighted_by(a: &[f32], b: &[f32], weight: impl Fn(usize) -> f32) -> f32 {
     let mut acc = [0.0f32; 8];
     let chunks = a.len() / 8 * 8;
-    for (((ca, cb), cg), cw) in a[..chunks]
+    for (c, (ca, cb)) in a[..chunks]
         .chunks_exact(8)
         .zip(b[..chunks].chunks_exact(8))
-        .zip(g[..chunks].chunks_exact(8))
-        .zip(gains[..chunks].chunks_exact(8))
+        .enumerate()
     {
-        for k in 0..8 {
+        for (k, sum) in acc.iter_mut().enumerate() {
             let d = ca[k] - cb[k];
-            acc[k] += cg[k] * cw[k] * d * d;
+            *sum += weight(c * 8 + k) * d * d;
         }
     }
     let mut sum = (acc[0] + acc[4]) + (acc[1] + acc[5]) + ((acc[2] + acc[6]) + (acc[3] + acc[7]));
     for k in chunks..a.len() {
         let d = a[k] - b[k];
-        sum += g[k] * gains[k] * d * d;
+        sum += weight(k) * d * d;
     }
     sum
 }
