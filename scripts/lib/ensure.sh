@@ -21,7 +21,8 @@ ensure_wasm_bindgen() {
   [ -f "$ROOT/Cargo.lock" ] || (cd "$ROOT" && cargo generate-lockfile)
   local want have
   want="$(wasm_bindgen_version)"
-  have="$(wasm-bindgen --version 2>/dev/null | awk '{print $2}')"
+  # '|| true': under pipefail a missing CLI would end the calling script here.
+  have="$( (wasm-bindgen --version 2>/dev/null || true) | awk '{print $2}')"
   if [ "$have" = "$want" ] && command -v wasm-bindgen-test-runner >/dev/null; then
     echo "ensure: wasm-bindgen-cli $want present"
   else
