@@ -15,7 +15,7 @@
 //!
 //! Nothing here allocates: the queues are kept in [`Residual`] and only grow to the node count.
 
-use super::residual::{NO_PARENT, ORPHAN, Residual, TERMINAL};
+use super::residual::{Arc, NO_PARENT, ORPHAN, Residual, TERMINAL};
 
 /// Marks an origin search that hit an orphan: the neighbour does not lead to the terminal.
 const UNREACHABLE: u32 = u32::MAX;
@@ -95,23 +95,28 @@ impl Residual {
             if open <= 0.0 {
                 continue;
             }
+            // The arc flow would take between the two: away from the source tree's root, towards
+            // the sink tree's.
+            let flow_arc = if from.in_sink_tree {
+                arc.sister
+            } else {
+                arc_index as u32
+            };
             let neighbour = &mut self.nodes[arc.head as usize];
             if neighbour.parent == NO_PARENT {
                 neighbour.in_sink_tree = from.in_sink_tree;
-                neighbour.parent = arc.sister;
+                neighbour.parent = flow_arc;
+                neighbour.parent_node = node;
                 neighbour.timestamp = from.timestamp;
                 neighbour.distance = from.distance + 1;
                 self.set_active(arc.head);
             } else if neighbour.in_sink_tree != from.in_sink_tree {
-                return Some(if from.in_sink_tree {
-                    arc.sister
-                } else {
-                    arc_index as u32
-                });
+                return Some(flow_arc);
             } else if neighbour.timestamp <= from.timestamp && neighbour.distance > from.distance {
                 // A shorter route to the root through `node`: shorter paths mean cheaper
                 // augmentations and adoptions later.
-                neighbour.parent = arc.sister;
+                neighbour.parent = flow_arc;
+                neighbour.parent_node = node;
                 neighbour.timestamp = from.timestamp;
                 neighbour.distance = from.distance + 1;
             }
@@ -126,70 +131,69 @@ impl Residual {
         let source_end = self.arcs[joining.sister as usize].head;
         let sink_end = joining.head;
 
+        // The first walk finds the bottleneck and keeps the path's (node, parent arc) pairs, so
+        // the second walk, which pushes the flow, reads them in order instead of following
+        // parents again (each step of a walk waits for the load of the step before).
+        let mut path = std::mem::take(&mut self.path);
+        path.clear();
         let mut bottleneck = joining.residual;
-        // Source half: flow runs from each parent down to its child, along the parent arc's sister.
+        // Source half: flow runs from each parent down to its child.
         let mut node = source_end;
         loop {
-            let parent = self.nodes[node as usize].parent;
-            if parent == TERMINAL {
+            let state = self.nodes[node as usize];
+            if state.parent == TERMINAL {
                 break;
             }
-            let down = self.arcs[parent as usize].sister;
-            bottleneck = bottleneck.min(self.arcs[down as usize].residual);
-            node = self.arcs[parent as usize].head;
+            path.push((node, state.parent));
+            bottleneck = bottleneck.min(self.arcs[state.parent as usize].residual);
+            node = state.parent_node;
         }
+        let source_root = node;
+        let source_half = path.len();
         bottleneck = bottleneck.min(self.nodes[node as usize].terminal);
-        // Sink half: flow runs from each child up its parent arc.
+        // Sink half: flow runs from each child up to its parent.
         let mut node = sink_end;
         loop {
-            let parent = self.nodes[node as usize].parent;
-            if parent == TERMINAL {
+            let state = self.nodes[node as usize];
+            if state.parent == TERMINAL {
                 break;
             }
-            bottleneck = bottleneck.min(self.arcs[parent as usize].residual);
-            node = self.arcs[parent as usize].head;
+            path.push((node, state.parent));
+            bottleneck = bottleneck.min(self.arcs[state.parent as usize].residual);
+            node = state.parent_node;
         }
+        let sink_root = node;
         bottleneck = bottleneck.min(-self.nodes[node as usize].terminal);
 
         self.push(joining_arc, bottleneck);
         // The bottleneck is the minimum of these residuals, so `x - bottleneck` is exactly zero for
         // the arc that set it and positive for the others: saturation tests need no tolerance.
-        let mut node = source_end;
-        loop {
-            let parent = self.nodes[node as usize].parent;
-            if parent == TERMINAL {
-                let root = &mut self.nodes[node as usize];
-                root.terminal -= bottleneck;
-                if root.terminal == 0.0 {
-                    self.make_orphan_front(node);
-                }
-                break;
+        // Orphans are made in path order, each half from its joining end to its root.
+        for (k, &(node, arc)) in path.iter().enumerate() {
+            if k == source_half {
+                self.settle_root(source_root, -bottleneck);
             }
-            let down = self.arcs[parent as usize].sister;
-            self.push(down, bottleneck);
-            if self.arcs[down as usize].residual == 0.0 {
+            self.push(arc, bottleneck);
+            if self.arcs[arc as usize].residual == 0.0 {
                 self.make_orphan_front(node);
             }
-            node = self.arcs[parent as usize].head;
         }
-        let mut node = sink_end;
-        loop {
-            let parent = self.nodes[node as usize].parent;
-            if parent == TERMINAL {
-                let root = &mut self.nodes[node as usize];
-                root.terminal += bottleneck;
-                if root.terminal == 0.0 {
-                    self.make_orphan_front(node);
-                }
-                break;
-            }
-            self.push(parent, bottleneck);
-            if self.arcs[parent as usize].residual == 0.0 {
-                self.make_orphan_front(node);
-            }
-            node = self.arcs[parent as usize].head;
+        if source_half == path.len() {
+            self.settle_root(source_root, -bottleneck);
         }
+        self.settle_root(sink_root, bottleneck);
+        self.path = path;
         bottleneck
+    }
+
+    /// Takes an augmentation's flow off a root's terminal arc (`change` is negative for the
+    /// source's, positive for the sink's); a root whose arc saturates becomes an orphan.
+    fn settle_root(&mut self, root: u32, change: f32) {
+        let state = &mut self.nodes[root as usize];
+        state.terminal += change;
+        if state.terminal == 0.0 {
+            self.make_orphan_front(root);
+        }
     }
 
     #[inline]
@@ -249,8 +253,10 @@ impl Residual {
         }
 
         if let Some((arc, distance)) = best {
+            let Arc { head, sister, .. } = self.arcs[arc as usize];
             let state = &mut self.nodes[orphan as usize];
-            state.parent = arc;
+            state.parent = if in_sink_tree { arc } else { sister };
+            state.parent_node = head;
             state.timestamp = self.time;
             state.distance = distance + 1;
             return;
@@ -274,7 +280,7 @@ impl Residual {
                 self.set_active(arc.head);
             }
             let parent = neighbour.parent;
-            if parent != TERMINAL && parent != ORPHAN && self.arcs[parent as usize].head == orphan {
+            if parent != TERMINAL && parent != ORPHAN && neighbour.parent_node == orphan {
                 self.make_orphan_back(arc.head);
             }
         }
@@ -301,7 +307,7 @@ impl Residual {
                     return steps;
                 }
                 ORPHAN => return UNREACHABLE,
-                parent => node = self.arcs[parent as usize].head,
+                _ => node = state.parent_node,
             }
         }
     }
@@ -315,7 +321,7 @@ impl Residual {
             state.timestamp = self.time;
             state.distance = distance;
             distance -= 1;
-            node = self.arcs[state.parent as usize].head;
+            node = state.parent_node;
         }
     }
 }
