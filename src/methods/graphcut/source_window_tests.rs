@@ -48,7 +48,7 @@ fn a_large_exemplar_is_searched_through_bounded_windows() {
             let region = s.error_region();
             let extent = s.patch_extent(0);
             assert!(extent.0 <= MAX_SOURCE_SIDE && extent.1 <= MAX_SOURCE_SIDE);
-            let window = SearchWindow::around(region, extent, (96, 96), tileable);
+            let window = SearchWindow::of(placement, region, extent, (96, 96), tileable);
             let (nx, ny) = transform_size((window.width, window.height), extent, window.boundary);
             assert!(
                 nx <= 3 * MAX_SOURCE_SIDE && ny <= 3 * MAX_SOURCE_SIDE,
