@@ -88,8 +88,13 @@ impl Synthesis {
         };
         for s in 0..self.sources.len() {
             let (pw, ph) = self.patch_extent(s);
-            let window =
-                SearchWindow::of(self.options.placement, region, (pw, ph), (w, h), self.canvas.wrap);
+            let window = SearchWindow::of(
+                self.options.placement,
+                region,
+                (pw, ph),
+                (w, h),
+                self.canvas.wrap,
+            );
             let (nx, ny) = transform_size((window.width, window.height), (pw, ph), window.boundary);
             if nx.saturating_mul(ny) > MAX_TRANSFORM_VALUES {
                 let source = &self.sources[s];
