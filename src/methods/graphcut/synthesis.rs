@@ -1,7 +1,7 @@
 //! The state of a graph-cut synthesis: the sources, the canvas with its seam memory, and the
 //! offsets already used. Placement (`placement.rs`) and seam finding (`seam.rs`) extend it.
 
-use std::collections::HashSet;
+use rustc_hash::FxHashSet;
 
 use super::canvas::{Canvas, Patch};
 use super::cost::{Sample, match_cost, value_sigma};
@@ -18,7 +18,7 @@ pub struct Synthesis {
     pub canvas: Canvas,
     pub rng: Rng,
     /// Offsets already placed (section 4: only unused offsets are considered).
-    pub used: HashSet<Patch>,
+    pub used: FxHashSet<Patch>,
     /// Standard deviation of the exemplar's values (sigma of eq. 3).
     pub sigma: f32,
     /// The FFT SSD search, kept between placements for its plans and buffers.
@@ -62,7 +62,7 @@ impl Synthesis {
             options,
             sources,
             canvas,
-            used: HashSet::new(),
+            used: FxHashSet::default(),
             ssd: SsdSearch::new(),
             seam_features: Vec::new(),
             seam_feature_weight: 0.0,
