@@ -67,6 +67,20 @@ impl Synthesis {
         }
     }
 
+    /// The output window the FFT search of a placement over `region` reads, for a patch of
+    /// `extent` (see [`SearchWindow::of`]).
+    #[must_use]
+    pub fn search_window(&self, region: Region, extent: (usize, usize)) -> SearchWindow {
+        let (w, h) = (self.canvas.width, self.canvas.height);
+        SearchWindow::of(
+            self.options.placement,
+            region,
+            extent,
+            (w, h),
+            self.canvas.wrap,
+        )
+    }
+
     /// Refuses, before any step, an exemplar whose search window would need a transform larger
     /// than the FFT search allows. With the sources bounded to windows of at most
     /// [`super::source_window::MAX_SOURCE_SIDE`] a side this never happens (the transform is at
@@ -88,13 +102,7 @@ impl Synthesis {
         };
         for s in 0..self.sources.len() {
             let (pw, ph) = self.patch_extent(s);
-            let window = SearchWindow::of(
-                self.options.placement,
-                region,
-                (pw, ph),
-                (w, h),
-                self.canvas.wrap,
-            );
+            let window = self.search_window(region, (pw, ph));
             let (nx, ny) = transform_size((window.width, window.height), (pw, ph), window.boundary);
             if nx.saturating_mul(ny) > MAX_TRANSFORM_VALUES {
                 let source = &self.sources[s];
@@ -196,13 +204,7 @@ impl Synthesis {
                 .crop(wx as usize, wy as usize, pw, ph)?;
             // Weights on the output: covered pixels (eq. 2), and only inside the error region
             // (the output sub-patch of eq. 4) for sub-patch matching, whose window is the region.
-            let window = SearchWindow::of(
-                self.options.placement,
-                region,
-                (pw, ph),
-                (w, h),
-                self.canvas.wrap,
-            );
+            let window = self.search_window(region, (pw, ph));
             let (pixels, weights) = window.gather(&self.canvas, |_, _| true)?;
             // Keyed by source and window: a source within the bound is transformed once per
             // synthesis, not per placement (the window's size depends on the patch and the region
