@@ -109,7 +109,9 @@ pub struct Progress {
     pub passes: usize,
     pub pass: usize,
     pub next: usize,
-    changed: Vec<bool>,
+    /// Per node, one more than the last sweep in which its match changed (0: not in this
+    /// M-step). PatchMatch reads it to skip a propagated candidate it has already tried.
+    changed: Vec<u8>,
     query: Query,
 }
 
@@ -120,7 +122,7 @@ impl Progress {
             passes: if nodes == 0 { 0 } else { passes },
             pass: 0,
             next: 0,
-            changed: vec![false; nodes],
+            changed: vec![0; nodes],
             query: Query::default(),
         }
     }
@@ -155,14 +157,21 @@ impl Progress {
         (self.pass * nodes + self.next) as f64 / (self.passes * nodes) as f64
     }
 
+    /// Records that `node`'s match changed in the sweep under way.
     pub fn mark_changed(&mut self, node: usize) {
-        self.changed[node] = true;
+        self.changed[node] = u8::try_from(self.pass + 1).unwrap_or(u8::MAX);
+    }
+
+    /// Whether `node`'s match changed in sweep `pass` or later.
+    #[must_use]
+    pub fn changed_since(&self, node: usize, pass: usize) -> bool {
+        usize::from(self.changed[node]) > pass
     }
 
     /// Nodes whose match changed so far.
     #[must_use]
     pub fn changed(&self) -> usize {
-        self.changed.iter().filter(|&&c| c).count()
+        self.changed.iter().filter(|&&c| c > 0).count()
     }
 
     /// Takes the query buffer out (to fill while the progress is borrowed elsewhere).

@@ -99,15 +99,20 @@ impl Search<'_> {
                     }
                 }
             };
-            // Propagation from the already-visited horizontal and vertical neighbours.
+            // Propagation from the already-visited horizontal and vertical neighbours. The
+            // sweep two before this one ran in the same direction, against the same queries and
+            // costs, and tried the same neighbours' candidates: a neighbour whose match has not
+            // changed since then offers one that lost already and would lose again (this
+            // node's best only got closer), so it is not measured twice.
+            let tried = |j: usize| pass >= 2 && !progress.changed_since(j, pass - 1);
             let qx = gx as isize - step;
-            if (0..nx as isize).contains(&qx) {
+            if (0..nx as isize).contains(&qx) && !tried(gy * nx + qx as usize) {
                 let m = matches[gy * nx + qx as usize];
                 let shift = grid.cols[gx] as i64 - grid.cols[qx as usize] as i64;
                 consider(space.clamp_from(m, shift, 0), &mut best);
             }
             let qy = gy as isize - step;
-            if (0..ny as isize).contains(&qy) {
+            if (0..ny as isize).contains(&qy) && !tried(qy as usize * nx + gx) {
                 let m = matches[qy as usize * nx + gx];
                 let shift = grid.rows[gy] as i64 - grid.rows[qy as usize] as i64;
                 consider(space.clamp_from(m, 0, shift), &mut best);
@@ -123,7 +128,7 @@ impl Search<'_> {
             }
 
             if best.0 != matches[i] {
-                progress.changed[i] = true;
+                progress.mark_changed(i);
             }
             matches[i] = best.0;
             distances[i] = best.1;
