@@ -163,35 +163,37 @@ impl SortedChannels {
                     }
                 }
                 _ => {
+                    // Every channel of a pixel in one pass (the image is read once, and a
+                    // pixel's lookups in the three tables are independent loads in flight
+                    // together); each value's new value is the same as channel by channel.
                     let n = starts[BUCKETS] as f32;
-                    for k in 0..c {
-                        let table = &starts[k * (BUCKETS + 1)..(k + 1) * (BUCKETS + 1)];
-                        let target = &self.channels[k][..];
-                        let m = target.len();
-                        // The exemplar quantile of a rank, as a multiplier: exact when both
-                        // counts are powers of two (the usual sizes), within an ulp otherwise.
-                        let to_quantile = m as f32 / n;
-                        let (lo, scale) = (lo[k], scale[k]);
-                        let rank = |v: &mut f32| {
-                            let at = ((*v - lo) * scale).max(0.0);
-                            let b = (at as u32).min(BUCKETS as u32 - 1) as usize;
-                            let (below, upto) = (table[b], table[b + 1]);
-                            let count = upto - below;
-                            let within = (((at - b as f32) * count as f32) as u32).min(count - 1);
-                            // The exemplar value at the same quantile (centre of the rank's bin).
-                            let q = (((below + within) as f32 + 0.5) * to_quantile) as u32;
-                            *v += strength * (target[(q as usize).min(m - 1)] - *v);
-                        };
-                        let pixels = data[range.start * stride..range.end * stride]
-                            .chunks_exact_mut(stride)
-                            .map(|px| &mut px[k]);
-                        match fixed {
-                            None => pixels.for_each(rank),
-                            Some(f) => pixels
-                                .zip(&f[range.clone()])
-                                .filter(|(_, f)| **f <= 0.0)
-                                .for_each(|(v, _)| rank(v)),
+                    let ranks: [Option<Rank<'_>>; 4] = std::array::from_fn(|k| {
+                        (k < c).then(|| Rank {
+                            table: &starts[k * (BUCKETS + 1)..(k + 1) * (BUCKETS + 1)],
+                            target: &self.channels[k][..],
+                            // The exemplar quantile of a rank, as a multiplier: exact when
+                            // both counts are powers of two (the usual sizes), within an ulp
+                            // otherwise.
+                            to_quantile: self.channels[k].len() as f32 / n,
+                            lo: lo[k],
+                            scale: scale[k],
+                        })
+                    });
+                    let pixels =
+                        data[range.start * stride..range.end * stride].chunks_exact_mut(stride);
+                    let apply = |px: &mut [f32]| {
+                        for (v, rank) in px.iter_mut().zip(&ranks) {
+                            if let Some(rank) = rank {
+                                *v += strength * (rank.quantile(*v) - *v);
+                            }
                         }
+                    };
+                    match fixed {
+                        None => pixels.for_each(apply),
+                        Some(f) => pixels
+                            .zip(&f[range.clone()])
+                            .filter(|(_, f)| **f <= 0.0)
+                            .for_each(|(px, _)| apply(px)),
                     }
                 }
             }
@@ -227,6 +229,32 @@ impl SortedChannels {
             }
         }
         scratch.pass >= 3
+    }
+}
+
+/// One channel's side of histogram matching: the bucket counts of the output and the sorted
+/// exemplar values.
+struct Rank<'a> {
+    /// Pixels below each bucket (`BUCKETS + 1` counts).
+    table: &'a [u32],
+    target: &'a [f32],
+    to_quantile: f32,
+    lo: f32,
+    scale: f32,
+}
+
+impl Rank<'_> {
+    /// The exemplar value of the same rank as `v`: its bucket's count below plus its place in
+    /// the bucket interpolated by value, at the centre of the rank's bin.
+    #[inline]
+    fn quantile(&self, v: f32) -> f32 {
+        let at = ((v - self.lo) * self.scale).max(0.0);
+        let b = (at as u32).min(BUCKETS as u32 - 1) as usize;
+        let (below, upto) = (self.table[b], self.table[b + 1]);
+        let count = upto - below;
+        let within = (((at - b as f32) * count as f32) as u32).min(count - 1);
+        let q = (((below + within) as f32 + 0.5) * self.to_quantile) as u32;
+        self.target[(q as usize).min(self.target.len() - 1)]
     }
 }
 
