@@ -4,7 +4,7 @@
 //                                  [--methods optimization,graphcut,subpatch,features,flow]
 //                                  [--svg www/scaling.svg]
 // Output sweep: the 128x128 www/samples/tiles_128.png to each square output size, up to each
-// method's LARGEST (4096 for texture optimisation and entire-patch graph cut, 2048 for
+X
 // sub-patch, 1024 for feature-guided synthesis and flow: larger cases take minutes each). Exemplar sweep: gravel (the 512x512
 // ../shared/textures/gravel_full.png, shrunk with Exemplar.resized below 512 and mirror-tiled
 // above it) to a 256x256 output. Flow animation is timed per frame after the first (frames per
@@ -29,7 +29,7 @@ const METHODS = {
 };
 const FLOW_FRAMES = 4;
 /** The largest output each method runs at (above it, minutes per case on a 2-core machine). */
-const LARGEST = { optimization: 4096, graphcut: 4096, subpatch: 2048, features: 1024, flow: 1024 };
+const LARGEST = { optimization: 4096, graphcut: 4096, subpatch: 4096, features: 1024, flow: 1024 };
 
 /** Builds the exemplar of a case: tiles_128, or gravel at `side` pixels. */
 function exemplarOf(lib, side) {
