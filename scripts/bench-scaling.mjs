@@ -4,8 +4,8 @@
 //                                  [--methods optimization,graphcut,subpatch,features,flow]
 //                                  [--svg www/scaling.svg]
 // Output sweep: the 128x128 www/samples/tiles_128.png to each square output size, up to each
-X
-// sub-patch, 1024 for feature-guided synthesis and flow: larger cases take minutes each). Exemplar sweep: gravel (the 512x512
+// method's LARGEST (4096 for texture optimisation and both graph-cut placements, 1024 for
+// feature-guided synthesis and flow: larger cases take minutes each). Exemplar sweep: gravel (the 512x512
 // ../shared/textures/gravel_full.png, shrunk with Exemplar.resized below 512 and mirror-tiled
 // above it) to a 256x256 output. Flow animation is timed per frame after the first (frames per
 // second over 4 frames); every other method runs to done. Prints two markdown tables (total
