@@ -2,6 +2,7 @@
 //! and the cost of the seam on every edge between neighbouring pixels, remembered so that later
 //! patches can overwrite bad old seams (section 3.1).
 
+use super::error_regions::ErrorRegions;
 use crate::core::{Image, Result};
 
 /// Label of a pixel no patch has covered yet.
@@ -55,6 +56,9 @@ pub struct Canvas {
     /// The sum of `h_seam` and `v_seam`, kept by [`Canvas::set_seam`] so that each step's event
     /// does not add up the whole output again.
     seam_total: f64,
+    /// The refinement's window totals of seam error, kept where [`Canvas::set_seam`] changes
+    /// seams (interior mutability: finding the region is a question, not a change).
+    regions: std::cell::RefCell<ErrorRegions>,
 }
 
 impl Canvas {
@@ -71,6 +75,7 @@ impl Canvas {
             covered: 0,
             first_uncovered_from: std::cell::Cell::new(0),
             seam_total: 0.0,
+            regions: std::cell::RefCell::default(),
         })
     }
 
@@ -173,13 +178,32 @@ impl Canvas {
     /// Remembers the seam cost of the edge from pixel `s` to its right (`horizontal`) or lower
     /// neighbour.
     pub fn set_seam(&mut self, s: usize, horizontal: bool, cost: f32) {
-        let slot = if horizontal {
-            &mut self.h_seam[s]
+        let other = if horizontal {
+            self.right(s)
         } else {
-            &mut self.v_seam[s]
+            self.down(s)
         };
-        self.seam_total += f64::from(cost) - f64::from(*slot);
-        *slot = cost;
+        let seams = if horizontal {
+            &mut self.h_seam
+        } else {
+            &mut self.v_seam
+        };
+        let old = std::mem::replace(&mut seams[s], cost);
+        self.seam_total += f64::from(cost) - f64::from(old);
+        if old != cost {
+            // Both ends' seam error changed.
+            let regions = self.regions.get_mut();
+            for p in std::iter::once(s).chain(other) {
+                regions.mark(p % self.width, p / self.width);
+            }
+        }
+    }
+
+    /// The top-left corner of the `side` x `side` window with the largest total seam error
+    /// (see `error_regions.rs`).
+    #[must_use]
+    pub fn largest_error_window(&self, side: usize) -> (usize, usize) {
+        self.regions.borrow_mut().largest(self, side)
     }
 
     /// 1 where a pixel's right or lower neighbour comes from a different patch (the seam map).

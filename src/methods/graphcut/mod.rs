@@ -7,6 +7,7 @@ pub mod anatomy;
 pub mod blend;
 pub mod canvas;
 pub mod cost;
+pub mod error_regions;
 pub mod memory;
 pub mod merge;
 pub mod options;

@@ -56,12 +56,10 @@ impl Synthesis {
                 height: side,
             };
         }
-        let error = self.canvas.seam_error();
-        let sums = box_sums(&error, w, h, side, self.canvas.wrap);
-        let best = (0..sums.len()).fold(0, |best, i| if sums[i] > sums[best] { i } else { best });
+        let (x, y) = self.canvas.largest_error_window(side);
         Region {
-            x: best % w,
-            y: best / w,
+            x,
+            y,
             width: side,
             height: side,
         }
