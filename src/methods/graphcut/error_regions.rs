@@ -7,13 +7,14 @@
 //! step took 0.5-1 s for that alone).
 //!
 //! The first look at a covered output computes everything with the whole-output functions
-//! ([`Canvas::seam_error`], [`box_sums`]), so it gives the same region as they do. Later updates
+//! ([`Canvas::seam_error`] and the two passes of `placement::box_sums`), so it gives the same
+//! region as they do. Later updates
 //! slide the same running sums over the changed part only, starting where that part starts: a
 //! window's sum can differ from a whole-row slide in its last bit, so two windows whose totals
 //! agree to about 1e-7 may trade places.
 
 use super::canvas::Canvas;
-use super::placement::box_sums;
+use super::placement::{sliding_column_sums, sliding_row_sums};
 
 /// Pixels whose seam error changed since the sums were brought up to date, as a box.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -91,12 +92,9 @@ impl ErrorRegions {
         self.side = side;
         self.dirty = None;
         self.error = canvas.seam_error();
-        self.sums = box_sums(&self.error, w, h, side, canvas.wrap);
-        // The row sums the update slides from: recomputed whole here, as box_sums does.
-        self.rows = vec![f32::NEG_INFINITY; w * h];
-        for y in 0..h {
-            self.slide_row(canvas, y, Span::whole(w));
-        }
+        // The two passes of `box_sums`, keeping the row sums the updates slide from.
+        self.rows = sliding_row_sums(&self.error, w, h, side, canvas.wrap);
+        self.sums = sliding_column_sums(&self.rows, w, h, side, canvas.wrap);
         self.best = (0..h).map(|y| self.best_in_row(w, y)).collect();
     }
 
@@ -240,6 +238,7 @@ fn pixel_error(canvas: &Canvas, p: usize) -> f32 {
 
 #[cfg(test)]
 mod tests {
+    use super::super::placement::box_sums;
     use super::*;
     use crate::core::Rng;
 

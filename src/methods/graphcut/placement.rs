@@ -533,7 +533,13 @@ pub fn box_sums(values: &[f32], w: usize, h: usize, side: usize, wrap: bool) -> 
 }
 
 /// Window sums of length `side` along each row, in f64 so that the running sum does not drift.
-fn sliding_row_sums(values: &[f32], w: usize, h: usize, side: usize, wrap: bool) -> Vec<f32> {
+pub(super) fn sliding_row_sums(
+    values: &[f32],
+    w: usize,
+    h: usize,
+    side: usize,
+    wrap: bool,
+) -> Vec<f32> {
     let mut out = vec![f32::NEG_INFINITY; w * h];
     for (row, out) in values.chunks_exact(w).zip(out.chunks_exact_mut(w)).take(h) {
         let mut sum: f64 = (0..side).map(|k| f64::from(row[k % w])).sum();
@@ -549,7 +555,13 @@ fn sliding_row_sums(values: &[f32], w: usize, h: usize, side: usize, wrap: bool)
 
 /// The same down the columns, all columns at once row by row (a column at a time strides through
 /// memory a row apart: 11% of a 1024x1024 synthesis went there).
-fn sliding_column_sums(values: &[f32], w: usize, h: usize, side: usize, wrap: bool) -> Vec<f32> {
+pub(super) fn sliding_column_sums(
+    values: &[f32],
+    w: usize,
+    h: usize,
+    side: usize,
+    wrap: bool,
+) -> Vec<f32> {
     let mut out = vec![f32::NEG_INFINITY; w * h];
     // Columns whose windows already cross the right border stay -inf.
     let live: Vec<bool> = values[..w]
