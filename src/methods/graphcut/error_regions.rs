@@ -14,7 +14,7 @@
 //! agree to about 1e-7 may trade places.
 
 use super::canvas::Canvas;
-use super::placement::{sliding_column_sums, sliding_row_sums};
+use super::placement::{slide_window, sliding_column_sums, sliding_row_sums};
 
 /// Pixels whose seam error changed since the sums were brought up to date, as a box.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -128,14 +128,17 @@ impl ErrorRegions {
         let (w, side) = (canvas.width, self.side);
         let row = &self.error[y * w..(y + 1) * w];
         let out = &mut self.rows[y * w..(y + 1) * w];
-        let mut sum: f64 = (0..side).map(|k| f64::from(row[columns.at(k, w)])).sum();
-        for k in 0..columns.len {
-            let x = columns.at(k, w);
-            if canvas.wrap || x + side <= w {
-                out[x] = sum as f32;
-            }
-            sum += f64::from(row[columns.at(k + side, w)]) - f64::from(row[x]);
-        }
+        slide_window(
+            columns.len,
+            side,
+            |k| row[columns.at(k, w)],
+            |k, total| {
+                let x = columns.at(k, w);
+                if canvas.wrap || x + side <= w {
+                    out[x] = total;
+                }
+            },
+        );
     }
 
     /// Window totals of column `x` for the windows starting at `rows`.
@@ -144,15 +147,18 @@ impl ErrorRegions {
         if !canvas.wrap && x + side > w {
             return; // no window starts here: its totals stay -inf
         }
-        let at = |k: usize| rows.at(k, h) * w + x;
-        let mut sum: f64 = (0..side).map(|k| f64::from(self.rows[at(k)])).sum();
-        for k in 0..rows.len {
-            let y = rows.at(k, h);
-            if canvas.wrap || y + side <= h {
-                self.sums[y * w + x] = sum as f32;
-            }
-            sum += f64::from(self.rows[at(k + side)]) - f64::from(self.rows[y * w + x]);
-        }
+        let (row_sums, sums) = (&self.rows, &mut self.sums);
+        slide_window(
+            rows.len,
+            side,
+            |k| row_sums[rows.at(k, h) * w + x],
+            |k, total| {
+                let y = rows.at(k, h);
+                if canvas.wrap || y + side <= h {
+                    sums[y * w + x] = total;
+                }
+            },
+        );
     }
 
     fn best_in_row(&self, w: usize, y: usize) -> usize {

@@ -532,7 +532,27 @@ pub fn box_sums(values: &[f32], w: usize, h: usize, side: usize, wrap: bool) -> 
     sliding_column_sums(&rows, w, h, side, wrap)
 }
 
-/// Window sums of length `side` along each row, in f64 so that the running sum does not drift.
+/// Slides a window of `side` values along positions `0..len`: `read(k)` is the value at position
+/// `k` (asked for `k < len + side`), and `write(k, total)` receives the total of positions
+/// `k..k + side`. The total is kept in f64 so that it does not drift, and updated as "plus the
+/// entering value, minus the leaving one" in that order. Every row and single-column window sum
+/// of the refinement goes through here, whole-output and kept alike (`error_regions.rs`), so
+/// windows started at the same place add to the same bits.
+#[inline]
+pub(super) fn slide_window(
+    len: usize,
+    side: usize,
+    read: impl Fn(usize) -> f32,
+    mut write: impl FnMut(usize, f32),
+) {
+    let mut sum: f64 = (0..side).map(|k| f64::from(read(k))).sum();
+    for k in 0..len {
+        write(k, sum as f32);
+        sum += f64::from(read(k + side)) - f64::from(read(k));
+    }
+}
+
+/// Window sums of length `side` along each row (see [`slide_window`]).
 pub(super) fn sliding_row_sums(
     values: &[f32],
     w: usize,
@@ -542,13 +562,16 @@ pub(super) fn sliding_row_sums(
 ) -> Vec<f32> {
     let mut out = vec![f32::NEG_INFINITY; w * h];
     for (row, out) in values.chunks_exact(w).zip(out.chunks_exact_mut(w)).take(h) {
-        let mut sum: f64 = (0..side).map(|k| f64::from(row[k % w])).sum();
-        for start in 0..w {
-            if wrap || start + side <= w {
-                out[start] = sum as f32;
-            }
-            sum += f64::from(row[(start + side) % w]) - f64::from(row[start]);
-        }
+        slide_window(
+            w,
+            side,
+            |k| row[k % w],
+            |start, total| {
+                if wrap || start + side <= w {
+                    out[start] = total;
+                }
+            },
+        );
     }
     out
 }
