@@ -31,39 +31,10 @@ impl Synthesis {
         force_new: &[usize],
         keep_old: &[usize],
     ) -> Result<Placed> {
-        let footprint = self.footprint(patch);
-        let (w, h) = (self.canvas.width, self.canvas.height);
-        // Pixels are found within the patch's rectangle: a table the size of the output would
-        // cost as much to clear as a 4096x4096 output has pixels, at every placement.
+        let w = self.canvas.width;
         let (pw, ph) = self.patch_extent(patch.source as usize);
-        let wrap = self.canvas.wrap;
-        let local = |j: usize| -> Option<usize> {
-            let (mut u, mut v) = (
-                (j % w) as i64 - i64::from(patch.tx),
-                (j / w) as i64 - i64::from(patch.ty),
-            );
-            if wrap {
-                u = u.rem_euclid(w as i64);
-                v = v.rem_euclid(h as i64);
-            }
-            ((0..pw as i64).contains(&u) && (0..ph as i64).contains(&v))
-                .then(|| v as usize * pw + u as usize)
-        };
-        let mut keep = vec![false; pw * ph];
-        for k in keep_old.iter().filter_map(|&i| local(i)) {
-            keep[k] = true;
-        }
-        let graph = SeamGraph::new(
-            self,
-            &Footprint {
-                cells: &footprint,
-                local,
-                box_len: pw * ph,
-            },
-            patch,
-            force_new,
-            |i| local(i).is_some_and(|k| keep[k]),
-        );
+        let local = self.local_index(patch);
+        let graph = self.seam_graph(self, patch, force_new, keep_old);
         let (cut_cost, taken) = graph.solve()?;
         let view = self.record_anatomy.then(|| {
             GraphView::new(
@@ -102,6 +73,56 @@ impl Synthesis {
             pixels_taken: taken.len(),
             cut_cost,
         })
+    }
+
+    /// The index of output pixel `j` within `patch`'s rectangle (`None` outside it). Pixels are
+    /// found within the rectangle: a table the size of the output would cost as much to clear
+    /// as a 4096x4096 output has pixels, at every placement.
+    pub(super) fn local_index(&self, patch: Patch) -> impl Fn(usize) -> Option<usize> + use<> {
+        let (w, h) = (self.canvas.width, self.canvas.height);
+        let (pw, ph) = self.patch_extent(patch.source as usize);
+        let wrap = self.canvas.wrap;
+        move |j: usize| -> Option<usize> {
+            let (mut u, mut v) = (
+                (j % w) as i64 - i64::from(patch.tx),
+                (j / w) as i64 - i64::from(patch.ty),
+            );
+            if wrap {
+                u = u.rem_euclid(w as i64);
+                v = v.rem_euclid(h as i64);
+            }
+            ((0..pw as i64).contains(&u) && (0..ph as i64).contains(&v))
+                .then(|| v as usize * pw + u as usize)
+        }
+    }
+
+    /// The seam graph of placing `patch` (see [`Synthesis::place`]), with the costs `grid` gives
+    /// (the synthesis itself, or in tests a view of it without its shortcuts).
+    pub(super) fn seam_graph<G: SeamGrid<Label = Patch>>(
+        &self,
+        grid: &G,
+        patch: Patch,
+        force_new: &[usize],
+        keep_old: &[usize],
+    ) -> SeamGraph {
+        let footprint = self.footprint(patch);
+        let (pw, ph) = self.patch_extent(patch.source as usize);
+        let local = self.local_index(patch);
+        let mut keep = vec![false; pw * ph];
+        for k in keep_old.iter().filter_map(|&i| local(i)) {
+            keep[k] = true;
+        }
+        SeamGraph::new(
+            grid,
+            &Footprint {
+                cells: &footprint,
+                local: &local,
+                box_len: pw * ph,
+            },
+            patch,
+            force_new,
+            |i| local(i).is_some_and(|k| keep[k]),
+        )
     }
 
     /// Recomputes the remembered seam cost of every edge touching `pixels`.
@@ -183,5 +204,9 @@ impl SeamGrid for Synthesis {
 
     fn seam_cost(&self, s: usize, t: usize, axis: usize, a: Patch, b: Patch) -> f32 {
         Synthesis::seam_cost(self, s, t, axis == 0, a, b)
+    }
+
+    fn cell_term(&self, i: usize, a: Patch, b: Patch) -> Option<f32> {
+        Synthesis::cell_term(self, i, a, b)
     }
 }

@@ -34,6 +34,14 @@ pub trait SeamGrid {
     /// M (or M') between `s` and its next neighbour `t` along `axis` when `s` shows `a` and `t`
     /// shows `b` (0 when `a == b`).
     fn seam_cost(&self, s: usize, t: usize, axis: usize, a: Self::Label, b: Self::Label) -> f32;
+    /// Where M is a sum of one term per cell (eq. 1: `||A(s) - B(s)|| + ||A(t) - B(t)||`, no
+    /// gradients, no other terms), cell `i`'s term when it shows `a` and the new patch is `b`,
+    /// such that `seam_cost(s, t, axis, a, b)` is `cell_term(s, a, b) + cell_term(t, a, b)` to
+    /// the bit; otherwise `None`. Most arcs of a seam graph join two cells showing the same old
+    /// patch, so the graph then computes each cell's term once instead of once per arc.
+    fn cell_term(&self, _i: usize, _a: Self::Label, _b: Self::Label) -> Option<f32> {
+        None
+    }
 }
 
 /// The graph of one placement as plain data, so that tests can hand it to a reference solver.
@@ -104,6 +112,28 @@ impl SeamGraph {
                 g.terminals.push((n, 0.0, HARD_CONSTRAINT));
             }
         }
+        // Each covered cell's own term of M, when M is made of such terms (empty otherwise).
+        let term = |i: usize| grid.label_of(i).and_then(|a| grid.cell_term(i, a, patch));
+        let terms: Vec<f32> = match g.cells.first() {
+            Some(&first) if term(first).is_some() => {
+                g.cells.iter().map(|&i| term(i).unwrap_or(0.0)).collect()
+            }
+            _ => Vec::new(),
+        };
+        // M between covered cells that show the same patch, and between a covered cell and an
+        // uncovered one (whose term is zero: see `seam_cost` in graphcut's synthesis).
+        let cost = |s: usize, t: usize, axis: usize, a: G::Label, b: G::Label| -> f32 {
+            match (
+                terms.is_empty(),
+                grid.label_of(s).is_some(),
+                grid.label_of(t).is_some(),
+            ) {
+                (true, _, _) => grid.seam_cost(s, t, axis, a, b),
+                (false, true, true) => terms[node_of(s) as usize] + terms[node_of(t) as usize],
+                (false, true, false) => terms[node_of(s) as usize] + 0.0,
+                (false, false, _) => 0.0 + terms[node_of(t) as usize],
+            }
+        };
         // Every edge with a covered end inside the patch, seen once from its first cell s.
         for &s in footprint.cells {
             for axis in 0..G::AXES {
@@ -123,19 +153,19 @@ impl SeamGraph {
                         g.seams.push((s, t));
                     }
                     (Some(a), Some(_)) => {
-                        let cost = grid.seam_cost(s, t, axis, a, patch);
-                        g.edges.push((node_of(s), node_of(t), cost));
+                        g.edges
+                            .push((node_of(s), node_of(t), cost(s, t, axis, a, patch)));
                     }
                     // The other cell is new and takes B: cut when the covered one keeps A.
                     // Only the covered cell's ||A - B|| counts: A does not reach the uncovered
                     // one (match_cost), whatever the empty output shows there.
                     (Some(a), None) => {
-                        let cost = grid.seam_cost(s, t, axis, a, patch);
-                        g.terminals.push((node_of(s), 0.0, cost));
+                        g.terminals
+                            .push((node_of(s), 0.0, cost(s, t, axis, a, patch)));
                     }
                     (None, Some(a)) => {
-                        let cost = grid.seam_cost(s, t, axis, patch, a);
-                        g.terminals.push((node_of(t), 0.0, cost));
+                        g.terminals
+                            .push((node_of(t), 0.0, cost(s, t, axis, patch, a)));
                     }
                 }
             }

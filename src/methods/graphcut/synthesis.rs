@@ -4,7 +4,7 @@
 use rustc_hash::FxHashSet;
 
 use super::canvas::{Canvas, Patch};
-use super::cost::{Sample, match_cost, value_sigma};
+use super::cost::{Sample, colour_distance, match_cost, value_sigma};
 use super::options::Options;
 use super::source::{Source, build_sources};
 use super::source_window::{MAX_SOURCE_SIDE, draw_origin, window_extent};
@@ -118,7 +118,7 @@ impl Synthesis {
             self.sample(b, t, horizontal),
             gradient,
         );
-        if self.seam_feature_weight > 0.0 && !self.seam_features.is_empty() {
+        if self.seam_feature_term() {
             let mismatch = |i: usize| match (self.feature_at(a, i), self.feature_at(b, i)) {
                 (Some(fa), Some(fb)) => f32::from(u8::from(fa != fb)),
                 _ => 0.0,
@@ -127,6 +127,25 @@ impl Synthesis {
         } else {
             m
         }
+    }
+
+    /// Pixel `i`'s term `||A(i) - B(i)||` of M when it shows patch `a` and `b` is the other patch:
+    /// [`Synthesis::seam_cost`] is the sum of its two pixels' terms, computed the same way, when
+    /// the cost is plain M (no gradient scaling, no feature mismatch); `None` otherwise.
+    #[must_use]
+    pub fn cell_term(&self, i: usize, a: Patch, b: Patch) -> Option<f32> {
+        let plain = !self.options.gradient_cost && !self.seam_feature_term();
+        plain.then(
+            || match (self.sample(a, i, true), self.sample(b, i, true)) {
+                (Some(a), Some(b)) => colour_distance(a.colour, b.colour),
+                _ => 0.0,
+            },
+        )
+    }
+
+    /// Whether M has the feature-mismatch term (feature-guided synthesis's seams).
+    fn seam_feature_term(&self) -> bool {
+        self.seam_feature_weight > 0.0 && !self.seam_features.is_empty()
     }
 
     /// Whether `patch` shows a feature pixel at output pixel `i` (None where it does not reach

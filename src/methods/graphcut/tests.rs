@@ -3,6 +3,7 @@
 
 use super::canvas::{Patch, UNCOVERED};
 use super::options::{Blend, Options, Placement, Transforms};
+use super::seam_graph::{SeamGraph, SeamGrid};
 use super::session::Session;
 use super::synthesis::Synthesis;
 use crate::core::testing::{noise, sample};
@@ -585,4 +586,74 @@ fn the_seam_pays_for_features_the_patches_do_not_share() {
     // Patch b does not reach output x = 0: no mismatch can be seen there.
     s.seam_feature_weight = 2.0;
     assert_eq!(s.feature_at(b, 5 * 24), None);
+}
+
+/// The synthesis without its per-pixel shortcut ([`Synthesis::cell_term`]): the seam graph then
+/// costs every arc with `seam_cost` itself.
+struct EdgeByEdge<'a>(&'a Synthesis);
+
+impl SeamGrid for EdgeByEdge<'_> {
+    type Label = Patch;
+    const AXES: usize = 2;
+    fn next(&self, i: usize, axis: usize) -> Option<usize> {
+        SeamGrid::next(self.0, i, axis)
+    }
+    fn prev(&self, i: usize, axis: usize) -> Option<usize> {
+        SeamGrid::prev(self.0, i, axis)
+    }
+    fn label_of(&self, i: usize) -> Option<Patch> {
+        self.0.label_of(i)
+    }
+    fn old_seam(&self, s: usize, axis: usize) -> f32 {
+        self.0.old_seam(s, axis)
+    }
+    fn seam_cost(&self, s: usize, t: usize, axis: usize, a: Patch, b: Patch) -> f32 {
+        SeamGrid::seam_cost(self.0, s, t, axis, a, b)
+    }
+}
+
+#[test]
+fn per_pixel_terms_give_the_seam_graph_of_edge_by_edge_costs_to_the_bit() {
+    let bits = |g: &SeamGraph| {
+        let edges: Vec<_> = g
+            .edges
+            .iter()
+            .map(|&(a, b, c)| (a, b, c.to_bits()))
+            .collect();
+        let terminals: Vec<_> = g
+            .terminals
+            .iter()
+            .map(|&(n, a, b)| (n, a.to_bits(), b.to_bits()))
+            .collect();
+        (g.nodes, g.cells.clone(), edges, terminals, g.seams.clone())
+    };
+    for (wrap, gradient_cost) in [(false, false), (true, false), (false, true)] {
+        let exemplar = noise(16, 16, 3, 3);
+        let options = Options {
+            output_width: 40,
+            output_height: 32,
+            tileable: wrap,
+            gradient_cost,
+            ..Options::default()
+        };
+        let mut s = Synthesis::new(&exemplar, options).unwrap();
+        let mut rng = Rng::new(7);
+        let mut seam_nodes = 0;
+        // Placements over an empty, a partly covered and a covered output, old seams included.
+        for _ in 0..40 {
+            let patch = Patch::new(0, rng.index(44) as i32 - 4, rng.index(36) as i32 - 4);
+            let some = s.canvas.label.iter().position(|&l| l != UNCOVERED);
+            if let Some(i) = some {
+                let a = s.patch_of(i).unwrap();
+                assert_eq!(s.cell_term(i, a, patch).is_some(), !gradient_cost);
+            }
+            let fast = s.seam_graph(&s, patch, &[], &[]);
+            let slow = s.seam_graph(&EdgeByEdge(&s), patch, &[], &[]);
+            assert_eq!(bits(&fast), bits(&slow));
+            seam_nodes += fast.seams.len();
+            s.place(patch, &[], &[]).unwrap();
+        }
+        assert_eq!(s.canvas.covered, 40 * 32, "the output ends covered");
+        assert!(seam_nodes > 0, "old seams were crossed");
+    }
 }
