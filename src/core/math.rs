@@ -10,6 +10,10 @@
 //!
 //! Use these instead of the `f32`/`f64` methods in anything that feeds an output; `sqrt`, `abs`,
 //! `floor`, `min`/`max` and the arithmetic operators are exact under IEEE 754 and need nothing.
+//!
+//! [`lesser`] and [`greater`] are `min` and `max` for hot loops: `f32::min`/`max` are IEEE
+//! minNum/maxNum, which wasm has no instruction for, so in wasm each one is a call to
+//! `fminf`/`fmaxf` and their NaN cases (in a max-flow path walk, 7% of a graph-cut synthesis).
 
 /// e^x.
 #[inline]
@@ -221,6 +225,23 @@ pub fn hypot(x: f64, y: f64) -> f64 {
     }
 }
 
+/// The smaller of `a` and `b` by one comparison: `b` if `b < a`, else `a`. The same as
+/// `f32::min` for numbers (up to the sign of a zero when both are zero); a NaN `b` gives `a`, a
+/// NaN `a` gives `a`. So `lesser(bound, x)` keeps a NaN `x` out.
+#[inline(always)]
+#[must_use]
+pub fn lesser(a: f32, b: f32) -> f32 {
+    if b < a { b } else { a }
+}
+
+/// The larger of `a` and `b` by one comparison: `b` if `b > a`, else `a` (see [`lesser`]).
+/// `greater(0.0, x)` is `x.max(0.0)`, a NaN `x` giving 0 as it does there.
+#[inline(always)]
+#[must_use]
+pub fn greater(a: f32, b: f32) -> f32 {
+    if b > a { b } else { a }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -243,5 +264,28 @@ mod tests {
         }
         assert_eq!(exp(0.0), 1.0);
         assert_eq!(pow(2.0, 10.0), 1024.0);
+    }
+
+    #[test]
+    fn lesser_and_greater_are_min_and_max_without_the_call() {
+        let values = [
+            -3.5f32,
+            -0.0,
+            0.0,
+            1e-30,
+            2.0,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+        ];
+        for &a in &values {
+            for &b in &values {
+                assert_eq!(lesser(a, b), a.min(b), "lesser({a}, {b})");
+                assert_eq!(greater(a, b), a.max(b), "greater({a}, {b})");
+            }
+            // A NaN never comes out of a bound: the accumulator keeps its value.
+            assert_eq!(lesser(a, f32::NAN), a);
+            assert_eq!(greater(a, f32::NAN), a);
+        }
+        assert_eq!(greater(0.0, f32::NAN), 0.0, "as f32::NAN.max(0.0)");
     }
 }

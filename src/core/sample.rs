@@ -3,6 +3,7 @@
 
 use super::error::{Error, Result};
 use super::image::Image;
+use super::math::{greater, lesser};
 
 /// What lies beyond the border: the border pixel repeated, or the image repeated periodically
 /// (for tileable textures).
@@ -103,8 +104,8 @@ fn bicubic<const C: usize>(image: &Image, x: f32, y: f32, edge: Edge, out: &mut 
     // Clamped to the four nearest pixels' range (min and max are exact in any order).
     let near = [ys[1] + xs[1], ys[1] + xs[2], ys[2] + xs[1], ys[2] + xs[2]].map(tap);
     for (k, o) in out.iter_mut().enumerate().take(C) {
-        let lo = near.iter().fold(f32::INFINITY, |m, p| m.min(p[k]));
-        let hi = near.iter().fold(f32::NEG_INFINITY, |m, p| m.max(p[k]));
+        let lo = near.iter().fold(f32::INFINITY, |m, p| lesser(m, p[k]));
+        let hi = near.iter().fold(f32::NEG_INFINITY, |m, p| greater(m, p[k]));
         *o = sum[k].clamp(lo, hi);
     }
 }
@@ -128,8 +129,8 @@ fn sample_bicubic_per_channel(image: &Image, x: f32, y: f32, edge: Edge, out: &m
                 let v = d[(yy * w + xx) * c + k];
                 row += wx[i] * v;
                 if (1..=2).contains(&i) && (1..=2).contains(&j) {
-                    lo = lo.min(v);
-                    hi = hi.max(v);
+                    lo = lesser(lo, v);
+                    hi = greater(hi, v);
                 }
             }
             sum += wy[j] * row;

@@ -9,6 +9,7 @@
 //! M-step sees it, and keeps the output's colour distribution the exemplar's.
 
 use crate::core::Image;
+use crate::core::math::greater;
 
 /// Buckets of the ranking between a channel's minimum and maximum (16 KB of counts: they stay
 /// in the first-level cache while a million pixels are ranked).
@@ -134,7 +135,7 @@ impl SortedChannels {
             // times, not three times per channel. (Truncating casts, not floor(): floor is a
             // library call on baseline x86-64.)
             let position = |v: f32, k: usize| {
-                let p = ((v - lo[k]) * scale[k]).max(0.0);
+                let p = greater(0.0, (v - lo[k]) * scale[k]);
                 let b = (p as usize).min(BUCKETS - 1);
                 (b, p - b as f32)
             };
@@ -248,7 +249,7 @@ impl Rank<'_> {
     /// the bucket interpolated by value, at the centre of the rank's bin.
     #[inline]
     fn quantile(&self, v: f32) -> f32 {
-        let at = ((v - self.lo) * self.scale).max(0.0);
+        let at = greater(0.0, (v - self.lo) * self.scale);
         let b = (at as u32).min(BUCKETS as u32 - 1) as usize;
         let (below, upto) = (self.table[b], self.table[b + 1]);
         let count = upto - below;

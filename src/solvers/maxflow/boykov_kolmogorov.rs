@@ -16,6 +16,7 @@
 //! Nothing here allocates: the queues are kept in [`Residual`] and only grow to the node count.
 
 use super::residual::{Arc, NO_PARENT, ORPHAN, Residual, TERMINAL};
+use crate::core::math::lesser;
 
 /// Marks an origin search that hit an orphan: the neighbour does not lead to the terminal.
 const UNREACHABLE: u32 = u32::MAX;
@@ -145,12 +146,12 @@ impl Residual {
                 break;
             }
             path.push((node, state.parent));
-            bottleneck = bottleneck.min(self.arcs[state.parent as usize].residual);
+            bottleneck = lesser(bottleneck, self.arcs[state.parent as usize].residual);
             node = state.parent_node;
         }
         let source_root = node;
         let source_half = path.len();
-        bottleneck = bottleneck.min(self.nodes[node as usize].terminal);
+        bottleneck = lesser(bottleneck, self.nodes[node as usize].terminal);
         // Sink half: flow runs from each child up to its parent.
         let mut node = sink_end;
         loop {
@@ -159,11 +160,11 @@ impl Residual {
                 break;
             }
             path.push((node, state.parent));
-            bottleneck = bottleneck.min(self.arcs[state.parent as usize].residual);
+            bottleneck = lesser(bottleneck, self.arcs[state.parent as usize].residual);
             node = state.parent_node;
         }
         let sink_root = node;
-        bottleneck = bottleneck.min(-self.nodes[node as usize].terminal);
+        bottleneck = lesser(bottleneck, -self.nodes[node as usize].terminal);
 
         self.push(joining_arc, bottleneck);
         // The bottleneck is the minimum of these residuals, so `x - bottleneck` is exactly zero for
