@@ -113,13 +113,16 @@ impl SeamGraph {
             }
         }
         // Each covered cell's own term of M, when M is made of such terms (empty otherwise).
-        let term = |i: usize| grid.label_of(i).and_then(|a| grid.cell_term(i, a, patch));
-        let terms: Vec<f32> = match g.cells.first() {
-            Some(&first) if term(first).is_some() => {
-                g.cells.iter().map(|&i| term(i).unwrap_or(0.0)).collect()
+        let mut terms: Vec<f32> = Vec::with_capacity(g.cells.len());
+        for &i in &g.cells {
+            match grid.label_of(i).and_then(|a| grid.cell_term(i, a, patch)) {
+                Some(term) => terms.push(term),
+                None => {
+                    terms.clear();
+                    break;
+                }
             }
-            _ => Vec::new(),
-        };
+        }
         // M between covered cells that show the same patch, and between a covered cell and an
         // uncovered one (whose term is zero: see `seam_cost` in graphcut's synthesis).
         let cost = |s: usize, t: usize, axis: usize, a: G::Label, b: G::Label| -> f32 {
