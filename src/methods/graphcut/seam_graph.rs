@@ -124,7 +124,9 @@ impl SeamGraph {
             }
         }
         // M between covered cells that show the same patch, and between a covered cell and an
-        // uncovered one (whose term is zero: see `seam_cost` in graphcut's synthesis).
+        // uncovered one (whose term is zero: see `seam_cost` in graphcut's synthesis). The zero
+        // is added as `seam_cost` adds it, so the capacity has the same bits (a -0.0 term
+        // becomes 0.0 either way).
         let cost = |s: usize, t: usize, axis: usize, a: G::Label, b: G::Label| -> f32 {
             match (
                 terms.is_empty(),
