@@ -98,6 +98,7 @@ impl Merge {
             // The user placed every source: each is laid down whole.
             max_source_side: usize::MAX,
             windows: Vec::new(),
+            graph: Default::default(),
             record_anatomy: false,
             last_graph: None,
         };

@@ -35,7 +35,7 @@ impl Synthesis {
         let (pw, ph) = self.patch_extent(patch.source as usize);
         let local = self.local_index(patch);
         let graph = self.seam_graph(self, patch, force_new, keep_old);
-        let (cut_cost, taken) = graph.solve()?;
+        let (cut_cost, taken) = graph.solve_with(&mut self.graph)?;
         let view = self.record_anatomy.then(|| {
             GraphView::new(
                 &graph,

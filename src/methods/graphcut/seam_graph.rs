@@ -83,7 +83,14 @@ impl SeamGraph {
     ) -> SeamGraph {
         let local = &footprint.local;
         let mut nodes = vec![u32::MAX; footprint.box_len];
-        let mut g = SeamGraph::default();
+        // Room for every cell and for an edge per cell and axis up front: growing the vectors
+        // as edges come in copied them several times per placement.
+        let cells = footprint.cells.len();
+        let mut g = SeamGraph {
+            cells: Vec::with_capacity(cells),
+            edges: Vec::with_capacity(cells * G::AXES),
+            ..SeamGraph::default()
+        };
         for &i in footprint.cells {
             if grid.label_of(i).is_none() {
                 g.uncovered.push(i);
@@ -180,20 +187,33 @@ impl SeamGraph {
 
     /// The solver's graph.
     pub fn build(&self) -> Result<Graph> {
-        let mut graph = Graph::with_capacity(self.nodes, self.edges.len())?;
+        let mut graph = Graph::default();
+        self.build_into(&mut graph)?;
+        Ok(graph)
+    }
+
+    /// [`SeamGraph::build`] into a graph kept between placements (its memory is reused).
+    pub fn build_into(&self, graph: &mut Graph) -> Result<()> {
+        graph.reset(self.nodes)?;
+        graph.reserve(self.edges.len());
         for &(a, b, c) in &self.edges {
             graph.add_edge(a as usize, b as usize, c, c)?;
         }
         for &(n, a, b) in &self.terminals {
             graph.add_terminal(n as usize, a, b)?;
         }
-        Ok(graph)
+        Ok(())
     }
 
     /// Solves the cut: its cost and the cells that take the new patch (every uncovered one, and
     /// the covered ones on B's side).
     pub fn solve(&self) -> Result<(f64, Vec<usize>)> {
-        let mut graph = self.build()?;
+        self.solve_with(&mut Graph::default())
+    }
+
+    /// [`SeamGraph::solve`] on a graph kept between placements (reset first).
+    pub fn solve_with(&self, graph: &mut Graph) -> Result<(f64, Vec<usize>)> {
+        self.build_into(graph)?;
         let cut_cost = graph.maxflow();
         let mut taken = self.uncovered.clone();
         taken.extend(

@@ -37,6 +37,9 @@ pub struct Synthesis {
     /// Whether placements keep their graph for the page's placement anatomy, and the last one.
     pub record_anatomy: bool,
     pub last_graph: Option<super::anatomy::GraphView>,
+    /// The max-flow graph, reset at every placement: its buffers (arcs, nodes, queues) keep
+    /// their memory between placements instead of being allocated and cleared anew each time.
+    pub graph: crate::solvers::maxflow::Graph,
 }
 
 impl Synthesis {
@@ -70,6 +73,7 @@ impl Synthesis {
             windows: Vec::new(),
             record_anatomy: false,
             last_graph: None,
+            graph: crate::solvers::maxflow::Graph::default(),
         };
         synthesis.check_search_size()?;
         Ok(synthesis)

@@ -128,6 +128,7 @@ impl Synthesis {
             windows: self.windows.clone(),
             record_anatomy: self.record_anatomy,
             last_graph: self.last_graph.clone(),
+            graph: Default::default(),
         }
     }
 

@@ -69,6 +69,11 @@ impl Graph {
         Ok(())
     }
 
+    /// Reserves room for `additional` more calls of [`Graph::add_edge`].
+    pub fn reserve(&mut self, additional: usize) {
+        self.edges.reserve(additional);
+    }
+
     #[must_use]
     pub fn node_count(&self) -> usize {
         self.terminals.len()
