@@ -53,7 +53,7 @@ impl Synthesis {
     /// Places `patch` with the seam surface the graph cut chooses.
     pub fn place(&mut self, patch: Patch, force_new: &[usize]) -> Result<Placed> {
         let graph = self.seam_graph(patch, force_new);
-        let (cut_cost, taken) = graph.solve()?;
+        let (cut_cost, taken) = graph.solve_with(&mut self.graph)?;
         self.last_graph = self
             .record_anatomy
             .then(|| self.graph_slice(&graph, patch, &taken));

@@ -16,6 +16,9 @@ pub struct Synthesis {
     /// last one kept.
     pub record_anatomy: bool,
     pub last_graph: Option<super::anatomy::GraphSlice>,
+    /// The max-flow graph, reset at every placement so its buffers keep their memory (as in
+    /// graph-cut textures).
+    pub graph: crate::solvers::maxflow::Graph,
 }
 
 impl Synthesis {
@@ -27,6 +30,7 @@ impl Synthesis {
             gradient_cost,
             record_anatomy: false,
             last_graph: None,
+            graph: crate::solvers::maxflow::Graph::default(),
         }
     }
 
