@@ -3,7 +3,8 @@
 //! placement (median, max), patches placed and the final total seam cost. `BENCH_SIZE=1024` and
 //! `BENCH_PLACEMENTS=entire-patch,sub-patch` pick the output size and placements. `scripts/bench.sh` runs
 //! this and the same cases as wasm in Node. `BENCH_WRITE=dir` also writes the outputs as PNGs;
-//! `BENCH_QUALITY=1` prints the quality metrics of each output; `BENCH_SEED` sets the seed.
+//! `BENCH_QUALITY=1` prints the quality metrics of each output; `BENCH_SEED` sets the seed;
+//! `BENCH_ERROR_REGION` the error region's side (0: the default, a third of the exemplar).
 
 use std::time::Instant;
 
@@ -45,6 +46,8 @@ fn main() {
                     output_width: size,
                     output_height: size,
                     seed: std::env::var("BENCH_SEED").map_or(1, |v| v.parse().expect("BENCH_SEED")),
+                    error_region: std::env::var("BENCH_ERROR_REGION")
+                        .map_or(0, |v| v.parse().expect("BENCH_ERROR_REGION")),
                     ..Options::default()
                 },
             )
