@@ -2,7 +2,7 @@
 //! Synthesises 256x256 (`BENCH_SIZE=1024`: 1024x1024) from the 128x128 and 64x64 samples with each search and prints total time,
 //! time per step (median, max), final energy and the search used. `scripts/bench.sh` runs this and
 //! the same cases as wasm in Node. `BENCH_WRITE=dir` also writes each output as a PNG;
-//! `BENCH_VERBOSE=1` prints every step.
+//! `BENCH_VERBOSE=1` prints every step; `BENCH_ITERATIONS` sets the iterations per level.
 
 use std::time::Instant;
 
@@ -38,6 +38,8 @@ fn main() {
                 search,
                 output_width: size,
                 output_height: size,
+                iterations: std::env::var("BENCH_ITERATIONS")
+                    .map_or(Options::default().iterations, |v| v.parse().expect("BENCH_ITERATIONS")),
                 ..Options::default()
             };
             let start = Instant::now();
