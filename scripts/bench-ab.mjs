@@ -12,6 +12,7 @@ import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { parseArgs } from 'node:util';
+import { METHODS, makeSession } from './lib/bench-sessions.mjs';
 
 const { values: opts, positionals } = parseArgs({
   allowPositionals: true,
@@ -41,20 +42,8 @@ async function load(dir) {
 const png = readFileSync(new URL('../www/samples/tiles_128.png', import.meta.url));
 function timeOne(lib) {
   const exemplar = lib.Exemplar.fromBytes(png);
-  const output = { outputWidth: size, outputHeight: size, memoryBudgetMiB: 3584 };
-  const make = {
-    optimization: () => new lib.TextureOptimization(exemplar, output),
-    graphcut: () => new lib.GraphcutTextures(exemplar, { ...output, placement: 'entire-patch' }),
-    subpatch: () => new lib.GraphcutTextures(exemplar, { ...output, placement: 'sub-patch' }),
-    features: () => new lib.FeatureSynthesis(exemplar, output),
-    flow: () => new lib.FlowAnimation(exemplar, { ...output, frames: 4 }),
-  }[opts.method];
-  if (!make) {
-    console.error(`unknown --method ${opts.method}`);
-    process.exit(2);
-  }
   const start = performance.now();
-  const session = make();
+  const session = makeSession(lib, opts.method, exemplar, size, 4);
   while (!session.done) session.step();
   const ms = performance.now() - start;
   session.free();
@@ -62,6 +51,10 @@ function timeOne(lib) {
   return ms;
 }
 
+if (!METHODS.includes(opts.method)) {
+  console.error(`unknown --method ${opts.method}: one of ${METHODS.join(', ')}`);
+  process.exit(2);
+}
 const builds = { A: await load(positionals[0]), B: await load(positionals[1]) };
 const times = { A: [], B: [] };
 for (let i = 0; i < runs; i++) {

@@ -15,6 +15,7 @@ import { spawnSync } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { fileURLToPath } from 'node:url';
+import { makeSession } from './lib/bench-sessions.mjs';
 
 const MiB = 1 << 20;
 const args = Object.fromEntries(
@@ -59,16 +60,8 @@ async function runCase(method, size, exemplarSide) {
   const lib = await import('../pkg/texsynth.js');
   const wasm = await lib.default({ module_or_path: readFileSync(new URL('../pkg/texsynth_bg.wasm', import.meta.url)) });
   const exemplar = exemplarOf(lib, exemplarSide);
-  const output = { outputWidth: size, outputHeight: size, memoryBudgetMiB: 3584 };
-  const make = {
-    optimization: () => new lib.TextureOptimization(exemplar, output),
-    graphcut: () => new lib.GraphcutTextures(exemplar, { ...output, placement: 'entire-patch' }),
-    subpatch: () => new lib.GraphcutTextures(exemplar, { ...output, placement: 'sub-patch' }),
-    features: () => new lib.FeatureSynthesis(exemplar, output),
-    flow: () => new lib.FlowAnimation(exemplar, { ...output, frames: FLOW_FRAMES }),
-  }[method];
   const start = performance.now();
-  const session = make();
+  const session = makeSession(lib, method, exemplar, size, FLOW_FRAMES);
   let longest = 0;
   let steps = 0;
   let firstFrame = 0;
