@@ -205,13 +205,9 @@ impl SeamGraph {
         Ok(())
     }
 
-    /// Solves the cut: its cost and the cells that take the new patch (every uncovered one, and
-    /// the covered ones on B's side).
-    pub fn solve(&self) -> Result<(f64, Vec<usize>)> {
-        self.solve_with(&mut Graph::default())
-    }
-
-    /// [`SeamGraph::solve`] on a graph kept between placements (reset first).
+    /// Solves the cut on `graph` (reset first: a synthesis keeps one between placements, so its
+    /// buffers are not allocated anew each time) and returns its cost and the cells that take
+    /// the new patch (every uncovered one, and the covered ones on B's side).
     pub fn solve_with(&self, graph: &mut Graph) -> Result<(f64, Vec<usize>)> {
         self.build_into(graph)?;
         let cut_cost = graph.maxflow();
