@@ -39,7 +39,9 @@ fn main() {
                 output_width: size,
                 output_height: size,
                 iterations: std::env::var("BENCH_ITERATIONS")
-                    .map_or(Options::default().iterations, |v| v.parse().expect("BENCH_ITERATIONS")),
+                    .map_or(Options::default().iterations, |v| {
+                        v.parse().expect("BENCH_ITERATIONS")
+                    }),
                 ..Options::default()
             };
             let start = Instant::now();
