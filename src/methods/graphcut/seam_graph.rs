@@ -130,22 +130,12 @@ impl SeamGraph {
                 }
             }
         }
-        // M between covered cells that show the same patch, and between a covered cell and an
-        // uncovered one (whose term is zero: see `seam_cost` in graphcut's synthesis). The zero
-        // is added as `seam_cost` adds it, so the capacity has the same bits (a -0.0 term
-        // becomes 0.0 either way).
-        let cost = |s: usize, t: usize, axis: usize, a: G::Label, b: G::Label| -> f32 {
-            match (
-                terms.is_empty(),
-                grid.label_of(s).is_some(),
-                grid.label_of(t).is_some(),
-            ) {
-                (true, _, _) => grid.seam_cost(s, t, axis, a, b),
-                (false, true, true) => terms[node_of(s) as usize] + terms[node_of(t) as usize],
-                (false, true, false) => terms[node_of(s) as usize] + 0.0,
-                (false, false, _) => 0.0 + terms[node_of(t) as usize],
-            }
-        };
+        // A cell's term, for M between covered cells that show the same patch and between a
+        // covered cell and an uncovered one (whose term is zero: see `seam_cost` in graphcut's
+        // synthesis). The zero is added as `seam_cost` adds it, so the capacity has the same
+        // bits (a -0.0 term becomes 0.0 either way).
+        let by_terms = !terms.is_empty();
+        let term = |i: usize| terms[node_of(i) as usize];
         // Every edge with a covered end inside the patch, seen once from its first cell s.
         for &s in footprint.cells {
             for axis in 0..G::AXES {
@@ -165,19 +155,31 @@ impl SeamGraph {
                         g.seams.push((s, t));
                     }
                     (Some(a), Some(_)) => {
-                        g.edges
-                            .push((node_of(s), node_of(t), cost(s, t, axis, a, patch)));
+                        let cost = if by_terms {
+                            term(s) + term(t)
+                        } else {
+                            grid.seam_cost(s, t, axis, a, patch)
+                        };
+                        g.edges.push((node_of(s), node_of(t), cost));
                     }
                     // The other cell is new and takes B: cut when the covered one keeps A.
                     // Only the covered cell's ||A - B|| counts: A does not reach the uncovered
                     // one (match_cost), whatever the empty output shows there.
                     (Some(a), None) => {
-                        g.terminals
-                            .push((node_of(s), 0.0, cost(s, t, axis, a, patch)));
+                        let cost = if by_terms {
+                            term(s) + 0.0
+                        } else {
+                            grid.seam_cost(s, t, axis, a, patch)
+                        };
+                        g.terminals.push((node_of(s), 0.0, cost));
                     }
                     (None, Some(a)) => {
-                        g.terminals
-                            .push((node_of(t), 0.0, cost(s, t, axis, patch, a)));
+                        let cost = if by_terms {
+                            0.0 + term(t)
+                        } else {
+                            grid.seam_cost(s, t, axis, patch, a)
+                        };
+                        g.terminals.push((node_of(t), 0.0, cost));
                     }
                 }
             }
