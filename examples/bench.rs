@@ -2,7 +2,8 @@
 //! Synthesises 256x256 (`BENCH_SIZE=1024`: 1024x1024) from the 128x128 and 64x64 samples with each search and prints total time,
 //! time per step (median, max), final energy and the search used. `scripts/bench.sh` runs this and
 //! the same cases as wasm in Node. `BENCH_WRITE=dir` also writes each output as a PNG;
-//! `BENCH_VERBOSE=1` prints every step; `BENCH_ITERATIONS` sets the iterations per level.
+//! `BENCH_VERBOSE=1` prints every step; `BENCH_ITERATIONS` sets the iterations per level;
+//! `BENCH_SEED` the seed (1).
 
 use std::time::Instant;
 
@@ -22,8 +23,9 @@ fn main() {
     let samples =
         std::env::var("BENCH_SAMPLES").unwrap_or_else(|_| "gravel_128,gravel_64,tiles_128".into());
     let size: usize = std::env::var("BENCH_SIZE").map_or(256, |v| v.parse().expect("BENCH_SIZE"));
+    let seed: u64 = std::env::var("BENCH_SEED").map_or(1, |v| v.parse().expect("BENCH_SEED"));
     println!(
-        "native texture optimization, {size}x{size} output, default schedule (r = 0.8, seed 1)"
+        "native texture optimization, {size}x{size} output, default schedule (r = 0.8, seed {seed})"
     );
     println!(
         "{:<12} {:<12} {:>6} {:>9} {:>10} {:>10} {:>12}",
@@ -38,6 +40,7 @@ fn main() {
                 search,
                 output_width: size,
                 output_height: size,
+                seed,
                 iterations: std::env::var("BENCH_ITERATIONS")
                     .map_or(Options::default().iterations, |v| {
                         v.parse().expect("BENCH_ITERATIONS")

@@ -1,7 +1,8 @@
 //! PatchMatch (Barnes et al. 2009) over the sparse grid of output neighbourhoods: each grid node
-//! tries its neighbours' matches shifted by the grid offset (propagation), then random candidates
-//! around its own match at halving radii (random search). Warm-started from the previous
-//! iteration's matches, so the EM iterations double as PatchMatch iterations.
+//! tries its neighbours' matches shifted by the grid offset (propagation), then, in the first
+//! sweep of an M-step, random candidates around its own match at halving radii (random search).
+//! Warm-started from the previous iteration's matches, so the EM iterations double as PatchMatch
+//! iterations.
 
 use super::patches::{Neighbourhoods, Pos};
 use super::{Objective, Progress, Queries};
@@ -117,8 +118,15 @@ impl Search<'_> {
                 let shift = grid.rows[gy] as i64 - grid.rows[qy as usize] as i64;
                 consider(space.clamp_from(m, 0, shift), &mut best);
             }
-            // Random search around the current best, radius halving down to one pixel.
-            let mut radius = max_radius;
+            // Random search around the current best, radius halving down to one pixel, in the
+            // first sweep of an M-step only. The queries are fixed for the whole M-step, and a
+            // node's random candidates in later sweeps almost never win: at the finest level of
+            // a 1024x1024 synthesis each radius won 0.01-0.3% of its tries in the second and
+            // third sweeps, against 2-16% for propagation, while the seven radii made over
+            // 90% of all evaluations. The later sweeps spread what the first one found, and the next
+            // M-step searches at random again: over the EM iterations every node still gets a
+            // random search per M-step, as in Barnes et al.'s one per iteration.
+            let mut radius = if pass == 0 { max_radius } else { 0 };
             while radius >= 1 {
                 let span = (2 * radius + 1) as u32;
                 let dx = i64::from(rng.below(span)) - radius;
@@ -282,6 +290,48 @@ mod tests {
             assert!((local.y as usize) < ny, "node {k} straddles: {m:?}");
             assert!(copy == 1 && d < 1e-9, "node {k}: {m:?} at {d}");
         }
+    }
+
+    #[test]
+    fn only_the_first_sweep_searches_at_random() {
+        // Random search is the only use of the generator, so three sweeps must draw exactly
+        // what one draws, while the later sweeps still propagate (and change matches).
+        let space = Neighbourhoods::new(exemplar(48, 40), 6);
+        let (cols, rows, queries) = cut_queries(&space, (10, 8), |x, y| Pos::new(x + 9, y + 7));
+        let len = space.vector_len();
+        let grid = QueryGrid {
+            cols: &cols,
+            rows: &rows,
+        };
+        let mut start_rng = Rng::new(11);
+        let start: Vec<Pos> = (0..80)
+            .map(|_| space.clamp(start_rng.below(43).into(), start_rng.below(35).into()))
+            .collect();
+        let run = |passes: usize| {
+            let mut rng = Rng::new(4);
+            let mut matches = start.clone();
+            let mut distances = vec![f32::INFINITY; 80];
+            improve(
+                &space,
+                &mut Stored {
+                    values: &queries,
+                    weights: None,
+                    len,
+                },
+                &Objective::default(),
+                grid,
+                &mut matches,
+                &mut distances,
+                passes,
+                &mut rng,
+            );
+            (matches, distances.iter().sum::<f32>(), rng)
+        };
+        let (one, one_cost, one_rng) = run(1);
+        let (three, three_cost, three_rng) = run(3);
+        assert_eq!(one_rng, three_rng, "the later sweeps drew random numbers");
+        assert_ne!(one, three, "the later sweeps propagated nothing");
+        assert!(three_cost < one_cost, "{three_cost} vs {one_cost}");
     }
 
     #[test]
