@@ -28,6 +28,9 @@ pub struct Scratch {
     scale: [f32; 4],
     /// Per channel, the pixels below each bucket (`BUCKETS + 1` counts).
     starts: Vec<u32>,
+    /// Per channel, the exemplar value of the rank at each bucket boundary (`BUCKETS + 1`
+    /// values): the transfer function, made once the counts are known.
+    transfer: Vec<f32>,
 }
 
 impl Scratch {
@@ -87,9 +90,10 @@ impl SortedChannels {
     ///
     /// Ranks come from a histogram of 4,096 buckets between the channel's minimum and maximum
     /// (three sequential passes, where a sort of a million pixels per E-step took a quarter of
-    /// a 1024x1024 synthesis): a pixel's rank is the count below its bucket plus its place in
-    /// the bucket interpolated by value (the piecewise-linear CDF). A bucket holding one pixel
-    /// gives the exact rank; equal values get equal ranks, so a flat area stays flat.
+    /// a 1024x1024 synthesis). The transfer function is piecewise linear: at each bucket
+    /// boundary it gives the exemplar quantile of the rank there (the count of pixels below),
+    /// and a value inside a bucket is interpolated by its place in the bucket. Equal values get
+    /// equal new values, so a flat area stays flat, and the order of values is kept.
     pub fn match_histogram(
         &self,
         output: &mut Image,
@@ -129,6 +133,7 @@ impl SortedChannels {
                 hi,
                 scale,
                 starts,
+                transfer,
                 ..
             } = scratch;
             // All channels in each pass over the interleaved values: the image is read three
@@ -164,18 +169,13 @@ impl SortedChannels {
                     }
                 }
                 _ => {
-                    // Every channel of a pixel in one pass (the image is read once, and a
-                    // pixel's lookups in the three tables are independent loads in flight
-                    // together); each value's new value is the same as channel by channel.
-                    let n = starts[BUCKETS] as f32;
-                    let ranks: [Option<Rank<'_>>; 4] = std::array::from_fn(|k| {
-                        (k < c).then(|| Rank {
-                            table: &starts[k * (BUCKETS + 1)..(k + 1) * (BUCKETS + 1)],
-                            target: &self.channels[k][..],
-                            // The exemplar quantile of a rank, as a multiplier: exact when
-                            // both counts are powers of two (the usual sizes), within an ulp
-                            // otherwise.
-                            to_quantile: self.channels[k].len() as f32 / n,
+                    // Every channel of a pixel in one pass over the image. A value's new value
+                    // is one load from a 16 KB table per channel (the boundaries around its
+                    // bucket), not a count then an exemplar value at the rank it gives (a
+                    // dependent load from the whole sorted exemplar: most of this pass's time).
+                    let transfers: [Option<Transfer<'_>>; 4] = std::array::from_fn(|k| {
+                        (k < c).then(|| Transfer {
+                            table: &transfer[k * (BUCKETS + 1)..(k + 1) * (BUCKETS + 1)],
                             lo: lo[k],
                             scale: scale[k],
                         })
@@ -183,9 +183,9 @@ impl SortedChannels {
                     let pixels =
                         data[range.start * stride..range.end * stride].chunks_exact_mut(stride);
                     let apply = |px: &mut [f32]| {
-                        for (v, rank) in px.iter_mut().zip(&ranks) {
-                            if let Some(rank) = rank {
-                                *v += strength * (rank.quantile(*v) - *v);
+                        for (v, transfer) in px.iter_mut().zip(&transfers) {
+                            if let Some(transfer) = transfer {
+                                *v += strength * (transfer.value(*v) - *v);
                             }
                         }
                     };
@@ -225,6 +225,14 @@ impl SortedChannels {
                             table[b + 1] += table[b];
                         }
                     }
+                    scratch.transfer.clear();
+                    for (k, below) in scratch.starts.chunks_exact(BUCKETS + 1).enumerate() {
+                        let target = &self.channels[k];
+                        let pixels = below[BUCKETS];
+                        scratch
+                            .transfer
+                            .extend(below.iter().map(|&r| quantile(target, r, pixels)));
+                    }
                 }
                 _ => {}
             }
@@ -233,29 +241,34 @@ impl SortedChannels {
     }
 }
 
-/// One channel's side of histogram matching: the bucket counts of the output and the sorted
-/// exemplar values.
-struct Rank<'a> {
-    /// Pixels below each bucket (`BUCKETS + 1` counts).
-    table: &'a [u32],
-    target: &'a [f32],
-    to_quantile: f32,
+/// The exemplar value at output rank `rank` of `pixels`: the sorted exemplar read at the same
+/// share of its length, between the centres of its values, linearly between neighbours.
+fn quantile(target: &[f32], rank: u32, pixels: u32) -> f32 {
+    let last = target.len() - 1;
+    let at = (f64::from(rank) / f64::from(pixels.max(1)) * target.len() as f64 - 0.5)
+        .clamp(0.0, last as f64);
+    let i = at as usize;
+    let (a, b) = (target[i], target[(i + 1).min(last)]);
+    (f64::from(a) + (at - i as f64) * f64::from(b - a)) as f32
+}
+
+/// One channel's transfer function: the exemplar quantiles at the bucket boundaries.
+struct Transfer<'a> {
+    /// `BUCKETS + 1` values, non-decreasing.
+    table: &'a [f32],
     lo: f32,
     scale: f32,
 }
 
-impl Rank<'_> {
-    /// The exemplar value of the same rank as `v`: its bucket's count below plus its place in
-    /// the bucket interpolated by value, at the centre of the rank's bin.
+impl Transfer<'_> {
+    /// The new value of `v`: between the quantiles at its bucket's two boundaries, by its place
+    /// in the bucket.
     #[inline]
-    fn quantile(&self, v: f32) -> f32 {
+    fn value(&self, v: f32) -> f32 {
         let at = greater(0.0, (v - self.lo) * self.scale);
         let b = (at as u32).min(BUCKETS as u32 - 1) as usize;
-        let (below, upto) = (self.table[b], self.table[b + 1]);
-        let count = upto - below;
-        let within = (((at - b as f32) * count as f32) as u32).min(count - 1);
-        let q = (((below + within) as f32 + 0.5) * self.to_quantile) as u32;
-        self.target[(q as usize).min(self.target.len() - 1)]
+        let (a, c) = (self.table[b], self.table[b + 1]);
+        a + (at - b as f32) * (c - a)
     }
 }
 
@@ -273,17 +286,31 @@ mod tests {
         SortedChannels::new(&ex).match_histogram(&mut out, 1.0, None, &mut Scratch::default());
         for k in 0..3 {
             let mut a: Vec<f32> = ex.data().iter().skip(k).step_by(3).copied().collect();
-            let mut b: Vec<f32> = out.data().iter().skip(k).step_by(3).copied().collect();
             a.sort_by(f32::total_cmp);
-            b.sort_by(f32::total_cmp);
-            // The output has twice the pixels: each exemplar value appears twice.
-            for (i, v) in b.iter().enumerate() {
-                assert_eq!(*v, a[i / 2]);
+            // The oracle: every output pixel's exact rank, by sorting the input.
+            let values = |img: &Image| -> Vec<f32> {
+                img.data().iter().skip(k).step_by(3).copied().collect()
+            };
+            let (input, matched) = (values(&before), values(&out));
+            let mut order: Vec<usize> = (0..input.len()).collect();
+            order.sort_by(|&i, &j| input[i].total_cmp(&input[j]));
+            for (rank, &i) in order.iter().enumerate() {
+                // The output has twice the pixels: the pixel of rank r takes the exemplar's
+                // value of rank r / 2, or lies between it and a neighbour.
+                let (below, above) = (a[(rank / 2).saturating_sub(1)], a[(rank / 2 + 1).min(255)]);
+                assert!(
+                    (below..=above).contains(&matched[i]),
+                    "channel {k}, rank {rank}: {} not in {below}..={above}",
+                    matched[i]
+                );
+                // The order is kept.
+                if rank > 0 {
+                    assert!(matched[i] >= matched[order[rank - 1]], "rank {rank}");
+                }
             }
+            assert_eq!(matched[order[0]], a[0]);
+            assert_eq!(matched[order[511]], a[255]);
         }
-        // Ranks are kept: a brighter input pixel stays at least as bright.
-        let (p, q) = (before.pixel(3, 2)[0], before.pixel(9, 5)[0]);
-        assert!(p < q && out.pixel(3, 2)[0] <= out.pixel(9, 5)[0]);
         // In parts (a few pixels per call), the same values.
         let mut parts = before.clone();
         let mut scratch = Scratch::default();
@@ -298,6 +325,21 @@ mod tests {
         let mut same = before.clone();
         SortedChannels::new(&ex).match_histogram(&mut same, 0.0, None, &mut Scratch::default());
         assert_eq!(same, before);
+        // Equal values get equal new values: a flat area stays flat.
+        let mut flat = Image::from_fn(32, 16, 3, |x, _, k| {
+            if x < 20 {
+                0.3 + 0.1 * k as f32
+            } else {
+                0.01 * x as f32
+            }
+        })
+        .unwrap();
+        SortedChannels::new(&ex).match_histogram(&mut flat, 1.0, None, &mut Scratch::default());
+        for y in 0..16 {
+            for x in 0..20 {
+                assert_eq!(flat.pixel(x, y), flat.pixel(0, 0), "({x}, {y})");
+            }
+        }
         // Fixed pixels keep their values.
         let mut fixed = vec![0.0; 32 * 16];
         fixed[5] = 1.0;
