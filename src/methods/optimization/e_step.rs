@@ -231,8 +231,9 @@ impl Sums {
 /// Adds one row run of a matched neighbourhood: `weight += omega g` and `colour += omega g z`
 /// per pixel, `g_channels` being `g` repeated over the channels. Two element-wise loops over
 /// contiguous values, which vectorise (a loop over pixels with the channels inside did not).
-/// Whole RGB rows of the usual widths (8, 16, 32) run in loops of a fixed length: a loop of a
-/// length known only at run time spends as long on its set-up and remainder as on 24 values.
+/// Whole RGB or grey rows of the usual widths (8, 16, 32) run in loops of a fixed length: a loop
+/// of a length known only at run time spends as long on its set-up and remainder as on 24
+/// values.
 #[inline]
 fn accumulate(
     omega: f32,
@@ -243,6 +244,9 @@ fn accumulate(
     colour: &mut [f32],
 ) {
     match (g.len(), colour.len()) {
+        (8, 8) => accumulate_fixed::<8, 8>(omega, g, g_channels, z, weight, colour),
+        (16, 16) => accumulate_fixed::<16, 16>(omega, g, g_channels, z, weight, colour),
+        (32, 32) => accumulate_fixed::<32, 32>(omega, g, g_channels, z, weight, colour),
         (8, 24) => accumulate_fixed::<8, 24>(omega, g, g_channels, z, weight, colour),
         (16, 48) => accumulate_fixed::<16, 48>(omega, g, g_channels, z, weight, colour),
         (32, 96) => accumulate_fixed::<32, 96>(omega, g, g_channels, z, weight, colour),
