@@ -105,8 +105,9 @@ pub struct LevelSolver {
     /// The M-step's own objective per node (equal to `distances` without constraints).
     objective: Vec<f32>,
     falloff: Vec<f32>,
-    /// The exemplar coverage the last occurrence penalty used (empty before).
-    coverage: Vec<f64>,
+    /// The last occurrence penalty (None before the first): the next remembers its coverage
+    /// and reuses its buffers.
+    occurrence_kept: Option<Occurrence>,
     /// This level's exemplar values sorted, for histogram matching, and its scratch space.
     histogram: SortedChannels,
     order: Scratch,
@@ -185,7 +186,7 @@ impl LevelSolver {
             },
             wavelet,
             objective: vec![f32::INFINITY; nodes],
-            coverage: Vec::new(),
+            occurrence_kept: None,
             histogram: SortedChannels::new(exemplar),
             order: Scratch::default(),
             running: None,
@@ -275,11 +276,11 @@ impl LevelSolver {
     /// [`LevelSolver::resume_m_step`] runs it.
     pub fn begin_m_step(&mut self, output: &Image) {
         let LevelSetup { mu, wrap, .. } = self.setup;
-        let occurrence = self.occurrence();
-        if let Some(o) = &occurrence {
-            self.coverage.clear();
-            self.coverage.extend_from_slice(o.coverage());
+        // An M-step begun and not finished leaves its occurrence penalty for this one.
+        if let Some(o) = self.running.take().and_then(|run| run.occurrence) {
+            self.occurrence_kept = Some(o);
         }
+        let occurrence = self.occurrence();
         self.running = Some(MStepRun {
             map: feature_map(output, mu, edge(wrap)),
             occurrence,
@@ -412,13 +413,16 @@ impl LevelSolver {
                 );
             }
         }
+        if run.occurrence.is_some() {
+            self.occurrence_kept = run.occurrence.take();
+        }
         self.refresh_local();
         Some(run.progress.changed())
     }
 
     /// The occurrence penalty for this M-step (None when it is off, or before the level's first
     /// M-step, when there are no distances to scale it by).
-    fn occurrence(&self) -> Option<Occurrence> {
+    fn occurrence(&mut self) -> Option<Occurrence> {
         let alpha = self.setup.completeness;
         if alpha <= 0.0 || self.distances.iter().any(|d| !d.is_finite()) {
             return None;
@@ -435,15 +439,17 @@ impl LevelSolver {
         // over-used: matches and energy see-saw from one iteration to the next. Averaging the
         // coverage with the last M-step's damps the swing (paving_128: 3430 -> 1746 matches
         // changed in the last iteration, and the energy falls at every iteration).
-        let remembered = (!self.coverage.is_empty()).then_some(self.coverage.as_slice());
-        Some(Occurrence::remembering(
+        let extent = (ex.width, ex.height);
+        let remember = self.occurrence_kept.is_some();
+        let mut occurrence = self.occurrence_kept.take().unwrap_or_default();
+        occurrence.rebuild(
             &self.matches,
             self.setup.size,
-            ex.width,
-            ex.height,
+            extent,
             alpha * share * mean as f32,
-            remembered,
-        ))
+            remember,
+        );
+        Some(occurrence)
     }
 
     /// The E-step: replaces `output` (this level's size) by the minimiser of the IRLS-weighted

@@ -29,9 +29,17 @@ pub fn strength(exemplar_area: usize, output_area: usize) -> f32 {
 }
 
 /// The coverage of the exemplar by the current matches, ready to price candidates.
+#[derive(Debug, Clone, Default)]
 pub struct Occurrence {
     /// Neighbourhoods covering each exemplar pixel, `width * height`.
     coverage: Vec<f64>,
+    /// `(width + 1) * (height + 1)`: the matches' windows as a 2-D difference array, then the
+    /// summed-area table of the coverage (one buffer, kept between M-steps: at a 3000x3000
+    /// exemplar each of these arrays is 72 MB, and allocating and zeroing them at every M-step
+    /// was a sixth of their cost).
+    sums: Vec<f64>,
+    /// The coverage of the row above, before averaging (`width`).
+    column: Vec<f64>,
     /// The penalty of every candidate position, `columns` per row: the search prices a
     /// candidate at every step of every query, so each is one load rather than four lookups in
     /// the summed-area table and the arithmetic after them.
@@ -58,67 +66,91 @@ impl Occurrence {
         scale: f32,
         previous: Option<&[f64]>,
     ) -> Self {
+        let mut occurrence = Occurrence::default();
+        if let Some(previous) = previous {
+            occurrence.coverage.extend_from_slice(previous);
+        }
+        occurrence.rebuild(matches, size, (width, height), scale, previous.is_some());
+        occurrence
+    }
+
+    /// Recomputes the coverage and the penalties for `matches` in this occurrence's buffers;
+    /// with `remember`, the new coverage is averaged with the one held (the last M-step's).
+    pub fn rebuild(
+        &mut self,
+        matches: &[Pos],
+        size: usize,
+        (width, height): (usize, usize),
+        scale: f32,
+        remember: bool,
+    ) {
         debug_assert!(scale >= 0.0);
+        let remember = remember && self.coverage.len() == width * height;
+        let Occurrence {
+            coverage,
+            sums,
+            column,
+            penalties,
+            columns,
+        } = self;
         // Each match adds 1 over its window: a 2-D difference array, then prefix sums.
         let stride = width + 1;
-        let mut diff = vec![0.0f64; stride * (height + 1)];
+        sums.clear();
+        sums.resize(stride * (height + 1), 0.0);
         for m in matches {
             let (x, y) = (m.x as usize, m.y as usize);
-            diff[y * stride + x] += 1.0;
-            diff[y * stride + x + size] -= 1.0;
-            diff[(y + size) * stride + x] -= 1.0;
-            diff[(y + size) * stride + x + size] += 1.0;
+            sums[y * stride + x] += 1.0;
+            sums[y * stride + x + size] -= 1.0;
+            sums[(y + size) * stride + x] -= 1.0;
+            sums[(y + size) * stride + x + size] += 1.0;
         }
-        let mut coverage = vec![0.0f64; width * height];
+        if !remember {
+            coverage.clear();
+            coverage.resize(width * height, 0.0);
+        }
+        column.clear();
+        column.resize(width, 0.0);
         for y in 0..height {
             let mut run = 0.0;
             for x in 0..width {
-                run += diff[y * stride + x];
-                coverage[y * width + x] = run
-                    + if y > 0 {
-                        coverage[(y - 1) * width + x]
-                    } else {
-                        0.0
-                    };
+                run += sums[y * stride + x];
+                let here = run + column[x];
+                column[x] = here;
+                let c = &mut coverage[y * width + x];
+                *c = if remember { 0.5 * (here + *c) } else { here };
             }
         }
-        if let Some(previous) = previous {
-            for (c, &p) in coverage.iter_mut().zip(previous) {
-                *c = 0.5 * (*c + p);
-            }
+        // The summed-area table over the (averaged) coverage, in the same buffer: its first
+        // row and column are zero, every other entry is written below.
+        sums[..stride].fill(0.0);
+        for y in 1..=height {
+            sums[y * stride] = 0.0;
         }
-        let mut table = vec![0.0f64; stride * (height + 1)];
         for y in 0..height {
             let mut run = 0.0;
             for x in 0..width {
                 run += coverage[y * width + x];
-                table[(y + 1) * stride + x + 1] = table[y * stride + x + 1] + run;
+                sums[(y + 1) * stride + x + 1] = sums[y * stride + x + 1] + run;
             }
         }
+        let table = &*sums;
         let even =
             (matches.len() * size * size) as f64 / (width * height) as f64 * (size * size) as f64;
         let inv_even = if even > 0.0 { 1.0 / even } else { 0.0 };
         // Zero up to an even share of use (the window's sum over the even one), then linear in
         // the excess.
-        let (columns, rows) = (
-            (width + 1).saturating_sub(size),
-            (height + 1).saturating_sub(size),
-        );
-        let penalties = (0..columns * rows)
-            .map(|i| {
-                let (x0, y0) = (i % columns, i / columns);
-                let (x1, y1) = (x0 + size, y0 + size);
-                let window =
-                    table[y1 * stride + x1] - table[y0 * stride + x1] - table[y1 * stride + x0]
-                        + table[y0 * stride + x0];
-                scale * (window * inv_even - 1.0).max(0.0) as f32
-            })
-            .collect();
-        Occurrence {
-            coverage,
-            penalties,
-            columns,
-        }
+        let rows = (height + 1).saturating_sub(size);
+        *columns = (width + 1).saturating_sub(size);
+        let columns = *columns;
+        penalties.clear();
+        penalties.extend((0..columns * rows).map(|i| {
+            let (x0, y0) = (i % columns, i / columns);
+            let (x1, y1) = (x0 + size, y0 + size);
+            let window =
+                table[y1 * stride + x1] - table[y0 * stride + x1] - table[y1 * stride + x0]
+                    + table[y0 * stride + x0];
+            scale * (window * inv_even - 1.0).max(0.0) as f32
+        }));
     }
 
     /// Neighbourhoods covering each exemplar pixel (averaged with the previous coverage when
@@ -194,6 +226,32 @@ mod tests {
         // 10 matches of 16 pixels over 256 pixels: an even window holds 10 * 16 / 256 * 16 = 10;
         // the used one holds 160, 15 over.
         assert!((occ.penalty(Pos::new(0, 0)) - 2.0 * 15.0).abs() < 1e-4);
+    }
+
+    #[test]
+    fn rebuilding_in_place_equals_building_anew() {
+        let first = [Pos::new(0, 0), Pos::new(3, 2), Pos::new(6, 5)];
+        let second = [Pos::new(1, 1), Pos::new(3, 2), Pos::new(2, 6)];
+        let (w, h, size) = (10, 9, 3);
+        let mut kept = Occurrence::new(&first, size, w, h, 0.7);
+        let anew = Occurrence::remembering(&second, size, w, h, 1.3, Some(kept.coverage()));
+        kept.rebuild(&second, size, (w, h), 1.3, true);
+        assert_eq!(kept.coverage(), anew.coverage());
+        assert_eq!(kept.penalties, anew.penalties);
+        // Without remembering, or for an exemplar of another size, nothing old is kept.
+        kept.rebuild(&first, size, (w, h), 0.7, false);
+        let fresh = Occurrence::new(&first, size, w, h, 0.7);
+        assert_eq!(
+            (kept.coverage(), &kept.penalties),
+            (fresh.coverage(), &fresh.penalties)
+        );
+        let inside = [Pos::new(0, 0), Pos::new(3, 2), Pos::new(4, 5)];
+        kept.rebuild(&inside, 2, (6, 7), 0.7, true);
+        let small = Occurrence::new(&inside, 2, 6, 7, 0.7);
+        assert_eq!(
+            (kept.coverage(), &kept.penalties),
+            (small.coverage(), &small.penalties)
+        );
     }
 
     #[test]
