@@ -254,7 +254,8 @@ fn accumulate(
     }
 }
 
-/// [`accumulate`] for `N` pixels of `NC` values: the same operations, on arrays.
+/// [`accumulate`] for `N` pixels of `NC` values: the same loops, over lengths the compiler
+/// knows once it inlines them.
 #[inline]
 fn accumulate_fixed<const N: usize, const NC: usize>(
     omega: f32,
@@ -273,16 +274,11 @@ fn accumulate_fixed<const N: usize, const NC: usize>(
     ) else {
         unreachable!("accumulate dispatches on the lengths");
     };
-    for k in 0..N {
-        weight[k] += omega * g[k];
-    }
-    for k in 0..NC {
-        colour[k] += omega * g_channels[k] * z[k];
-    }
+    accumulate_any(omega, g, g_channels, z, weight, colour);
 }
 
 /// [`accumulate`] for any run.
-#[inline]
+#[inline(always)]
 fn accumulate_any(
     omega: f32,
     g: &[f32],

@@ -190,6 +190,36 @@ mod tests {
         (cols, rows, queries)
     }
 
+    /// [`improve`] over stored queries of `len` values, with the plain distance.
+    #[allow(clippy::too_many_arguments)]
+    fn improve_stored(
+        space: &Neighbourhoods,
+        queries: &[f32],
+        len: usize,
+        grid: QueryGrid<'_>,
+        matches: &mut [Pos],
+        distances: &mut [f32],
+        passes: usize,
+        rng: &mut Rng,
+    ) -> usize {
+        let mut stored = Stored {
+            values: queries,
+            weights: None,
+            len,
+        };
+        let objective = Objective::default();
+        improve(
+            space,
+            &mut stored,
+            &objective,
+            grid,
+            matches,
+            distances,
+            passes,
+            rng,
+        )
+    }
+
     #[test]
     fn recovers_a_shifted_copy_exactly_like_exact_search() {
         // The output is a crop of the exemplar: every query has a zero-distance match, and
@@ -211,14 +241,10 @@ mod tests {
             rows: &rows,
         };
         for _ in 0..6 {
-            improve(
+            improve_stored(
                 &space,
-                &mut Stored {
-                    values: &queries,
-                    weights: None,
-                    len,
-                },
-                &Objective::default(),
+                &queries,
+                len,
                 grid,
                 &mut matches,
                 &mut distances,
@@ -258,14 +284,10 @@ mod tests {
             .collect();
         let run = |matches: &mut Vec<Pos>, rng: &mut Rng| {
             let mut distances = vec![f32::INFINITY; 30];
-            improve(
+            improve_stored(
                 &space,
-                &mut Stored {
-                    values: &queries,
-                    weights: None,
-                    len,
-                },
-                &Objective::default(),
+                &queries,
+                len,
                 QueryGrid {
                     cols: &cols,
                     rows: &rows,
@@ -311,14 +333,10 @@ mod tests {
             let mut rng = Rng::new(4);
             let mut matches = start.clone();
             let mut distances = vec![f32::INFINITY; 80];
-            improve(
+            improve_stored(
                 &space,
-                &mut Stored {
-                    values: &queries,
-                    weights: None,
-                    len,
-                },
-                &Objective::default(),
+                &queries,
+                len,
                 grid,
                 &mut matches,
                 &mut distances,
@@ -362,14 +380,10 @@ mod tests {
         };
         let mut previous = distances.clone();
         for _ in 0..8 {
-            improve(
+            improve_stored(
                 &space,
-                &mut Stored {
-                    values: &queries,
-                    weights: None,
-                    len,
-                },
-                &Objective::default(),
+                &queries,
+                len,
                 grid,
                 &mut matches,
                 &mut distances,
