@@ -444,7 +444,7 @@ impl LevelSolver {
         let mut occurrence = self.occurrence_kept.take().unwrap_or_default();
         occurrence.rebuild(
             &self.matches,
-            self.setup.size,
+            (self.setup.size, self.setup.spacing),
             extent,
             alpha * share * mean as f32,
             remember,
