@@ -136,6 +136,27 @@ impl SortedChannels {
                 transfer,
                 ..
             } = scratch;
+            let mut general = false;
+            // Whole pixels and nothing fixed (the usual case): the passes in loops over a
+            // channel count known at compile time, which the compiler unrolls and vectorises.
+            // The arithmetic per value is the general loops' below.
+            if fixed.is_none() && c == stride {
+                let values = &mut data[range.start * stride..range.end * stride];
+                match c {
+                    1 => {
+                        plain_pass::<1, 4>(*pass, values, lo, hi, scale, starts, transfer, strength)
+                    }
+                    3 => plain_pass::<3, 12>(
+                        *pass, values, lo, hi, scale, starts, transfer, strength,
+                    ),
+                    4 => plain_pass::<4, 16>(
+                        *pass, values, lo, hi, scale, starts, transfer, strength,
+                    ),
+                    _ => general = true,
+                }
+            } else {
+                general = true;
+            }
             // All channels in each pass over the interleaved values: the image is read three
             // times, not three times per channel. (Truncating casts, not floor(): floor is a
             // library call on baseline x86-64.)
@@ -145,6 +166,7 @@ impl SortedChannels {
                 (b, p - b as f32)
             };
             match pass {
+                _ if !general => {}
                 0 => {
                     for i in range.filter(|&i| free(i)) {
                         for k in 0..c {
@@ -174,11 +196,7 @@ impl SortedChannels {
                     // bucket), not a count then an exemplar value at the rank it gives (a
                     // dependent load from the whole sorted exemplar: most of this pass's time).
                     let transfers: [Option<Transfer<'_>>; 4] = std::array::from_fn(|k| {
-                        (k < c).then(|| Transfer {
-                            table: &transfer[k * (BUCKETS + 1)..(k + 1) * (BUCKETS + 1)],
-                            lo: lo[k],
-                            scale: scale[k],
-                        })
+                        (k < c).then(|| Transfer::of(transfer, k, lo, scale))
                     });
                     let pixels =
                         data[range.start * stride..range.end * stride].chunks_exact_mut(stride);
@@ -241,6 +259,79 @@ impl SortedChannels {
     }
 }
 
+/// One pass of [`SortedChannels::resume`] over `values`, whole pixels of `C` channels none of
+/// which is fixed; `N` is four pixels' values (`4 * C`). The range pass keeps `N` running
+/// minima and maxima (value `j` of every four pixels in lane `j`) and folds the lanes into the
+/// channels at the end: the same minimum and maximum, in a loop over fixed-size blocks.
+#[allow(clippy::too_many_arguments)]
+fn plain_pass<const C: usize, const N: usize>(
+    pass: u8,
+    values: &mut [f32],
+    lo: &mut [f32; 4],
+    hi: &mut [f32; 4],
+    scale: &[f32; 4],
+    starts: &mut [u32],
+    transfer: &[f32],
+    strength: f32,
+) {
+    match pass {
+        0 => {
+            let (mut low, mut high) = ([f32::INFINITY; N], [f32::NEG_INFINITY; N]);
+            let blocks = values.chunks_exact(N);
+            let rest = blocks.remainder();
+            let mut take = |lane: usize, v: f32| {
+                if v < low[lane] {
+                    low[lane] = v;
+                }
+                if v > high[lane] {
+                    high[lane] = v;
+                }
+            };
+            for block in blocks {
+                for (lane, &v) in block.iter().enumerate() {
+                    take(lane, v);
+                }
+            }
+            for (lane, &v) in rest.iter().enumerate() {
+                take(lane, v);
+            }
+            for lane in 0..N {
+                let k = lane % C;
+                if low[lane] < lo[k] {
+                    lo[k] = low[lane];
+                }
+                if high[lane] > hi[k] {
+                    hi[k] = high[lane];
+                }
+            }
+        }
+        1 => {
+            let mut tables = starts.chunks_exact_mut(BUCKETS + 1);
+            let counts: [&mut [u32; BUCKETS + 1]; C] = std::array::from_fn(|_| {
+                tables
+                    .next()
+                    .and_then(|t| t.try_into().ok())
+                    .expect("a table per channel")
+            });
+            for px in values.chunks_exact(C) {
+                for k in 0..C {
+                    let p = greater(0.0, (px[k] - lo[k]) * scale[k]);
+                    counts[k][(p as usize).min(BUCKETS - 1) + 1] += 1;
+                }
+            }
+        }
+        _ => {
+            let transfers: [Transfer<'_>; C] =
+                std::array::from_fn(|k| Transfer::of(transfer, k, lo, scale));
+            for px in values.chunks_exact_mut(C) {
+                for (v, t) in px.iter_mut().zip(&transfers) {
+                    *v += strength * (t.value(*v) - *v);
+                }
+            }
+        }
+    }
+}
+
 /// The exemplar value at output rank `rank` of `pixels`: the sorted exemplar read at the same
 /// share of its length, between the centres of its values, linearly between neighbours.
 fn quantile(target: &[f32], rank: u32, pixels: u32) -> f32 {
@@ -254,13 +345,23 @@ fn quantile(target: &[f32], rank: u32, pixels: u32) -> f32 {
 
 /// One channel's transfer function: the exemplar quantiles at the bucket boundaries.
 struct Transfer<'a> {
-    /// `BUCKETS + 1` values, non-decreasing.
-    table: &'a [f32],
+    /// Non-decreasing.
+    table: &'a [f32; BUCKETS + 1],
     lo: f32,
     scale: f32,
 }
 
-impl Transfer<'_> {
+impl<'a> Transfer<'a> {
+    /// Channel `k`'s, from the tables of all channels.
+    fn of(tables: &'a [f32], k: usize, lo: &[f32; 4], scale: &[f32; 4]) -> Self {
+        let table = &tables[k * (BUCKETS + 1)..(k + 1) * (BUCKETS + 1)];
+        Transfer {
+            table: table.try_into().expect("a table per channel"),
+            lo: lo[k],
+            scale: scale[k],
+        }
+    }
+
     /// The new value of `v`: between the quantiles at its bucket's two boundaries, by its place
     /// in the bucket.
     #[inline]
@@ -276,6 +377,57 @@ impl Transfer<'_> {
 mod tests {
     use super::*;
     use crate::core::testing::noise;
+
+    /// The loops for whole pixels with nothing fixed give the general loops' values to the bit
+    /// (an all-zero mask takes the general loops and fixes nothing), for grey, RGB and RGBA,
+    /// at full and half strength, in one run and resumed after an odd number of pixels.
+    #[test]
+    fn plain_pixel_loops_equal_the_general_loops_to_the_bit() {
+        for channels in [1, 3, 4] {
+            let ex = noise(24, 20, channels, 3);
+            // Values outside the exemplar's range, another range per channel, a flat run, and a
+            // size that leaves a remainder after blocks of four pixels.
+            let out = Image::from_fn(37, 29, channels, |x, y, k| {
+                let spread = 1.0 + k as f32;
+                if y == 3 {
+                    0.5
+                } else {
+                    ((x * 7 + y * 13 + k * 5) % 31) as f32 / 20.0 * spread - 0.2 * spread
+                }
+            })
+            .unwrap();
+            let none = vec![0.0f32; 37 * 29];
+            let sorted = SortedChannels::new(&ex);
+            for strength in [1.0, 0.5] {
+                let mut general = out.clone();
+                sorted.match_histogram(
+                    &mut general,
+                    strength,
+                    Some(&none),
+                    &mut Scratch::default(),
+                );
+                let mut plain = out.clone();
+                sorted.match_histogram(&mut plain, strength, None, &mut Scratch::default());
+                let mut resumed = out.clone();
+                let mut scratch = Scratch::default();
+                scratch.restart();
+                loop {
+                    let mut budget = 97;
+                    if sorted.resume(&mut resumed, strength, None, &mut scratch, &mut budget) {
+                        break;
+                    }
+                }
+                let bits = |i: &Image| i.data().iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+                assert_ne!(bits(&general), bits(&out));
+                assert_eq!(bits(&plain), bits(&general), "{channels} channels");
+                assert_eq!(
+                    bits(&resumed),
+                    bits(&general),
+                    "{channels} channels, resumed"
+                );
+            }
+        }
+    }
 
     #[test]
     fn full_strength_gives_the_exemplar_histogram_and_keeps_the_order() {

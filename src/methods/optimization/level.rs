@@ -4,7 +4,7 @@
 //! flow-guided animation both drive it.
 
 use super::constraints::{Constraint, QueryTerms};
-use super::e_step::{Matches, Sums, robust_weight};
+use super::e_step::{Matches, Sums, robust_weights};
 use super::features::feature_map;
 use super::histogram::{Scratch, SortedChannels};
 use super::m_step::Matcher;
@@ -95,6 +95,10 @@ pub struct LevelSolver {
     /// (fall-off weighted), plus the weighted wavelet term with a wavelet energy. The IRLS
     /// weights and the occurrence penalty's scale come from them.
     distances: Vec<f32>,
+    /// The IRLS weight of each distance and the sum of d^(r/2) over them, made once per
+    /// M-step ([`LevelSolver::settle`]).
+    robust: Vec<f32>,
+    texture_sum: f64,
     /// The pixel term alone with a wavelet energy (empty otherwise): the reported energy, so
     /// that energies compare.
     pixel_distances: Vec<f32>,
@@ -174,6 +178,8 @@ impl LevelSolver {
         let mut solver = LevelSolver {
             falloff: gaussian_falloff(setup.size, 1),
             distances: vec![f32::INFINITY; nodes],
+            robust: vec![1.0; nodes],
+            texture_sum: f64::INFINITY,
             pixel_distances: if wavelet.is_some() {
                 vec![f32::INFINITY; nodes]
             } else {
@@ -417,7 +423,14 @@ impl LevelSolver {
             self.occurrence_kept = run.occurrence.take();
         }
         self.refresh_local();
+        self.settle();
         Some(run.progress.changed())
+    }
+
+    /// The IRLS weights of the distances just found and their texture energy
+    /// ([`robust_weights`]), once per M-step.
+    pub(super) fn settle(&mut self) {
+        self.texture_sum = robust_weights(&self.distances, self.setup.r, &mut self.robust);
     }
 
     /// The occurrence penalty for this M-step (None when it is off, or before the level's first
@@ -471,25 +484,13 @@ impl LevelSolver {
     /// Starts an E-step on an output like `output`: the IRLS weights are fixed now, from the
     /// last distances (all 1 before the first M-step).
     pub fn begin_e_step(&mut self, output: &Image) {
-        let r = self.setup.r;
         // With a wavelet energy the E-step stays this pixel average (the matches, chosen under
         // eq. 4, carry the wavelet term): the exact minimiser of eq. 4 over x with weighted
         // coefficients is a linear solve with W^T D W, which is not diagonal (a block-coupled
         // system per neighbourhood), and with all weights 1 it is the pixel average anyway
-        // (Parseval). The IRLS weights below come from the full eq. 4 distances.
-        let weights: Vec<f32> = self
-            .distances
-            .iter()
-            .map(|&d| {
-                if d.is_finite() {
-                    robust_weight(d, r)
-                } else {
-                    1.0
-                }
-            })
-            .collect();
+        // (Parseval). The IRLS weights come from the full eq. 4 distances.
         self.summing = Some(EStepRun {
-            weights,
+            weights: self.robust.clone(),
             sums: Sums::new(output, self.setup.mu > 0.0),
             next: 0,
         });
@@ -522,6 +523,12 @@ impl LevelSolver {
         let done = end == nodes;
         self.summing = Some(run);
         done
+    }
+
+    /// The IRLS weights of the begun E-step.
+    #[cfg(test)]
+    pub fn e_step_weights(&self) -> Option<&[f32]> {
+        self.summing.as_ref().map(|run| &run.weights[..])
     }
 
     /// Ends the begun E-step (every node added): writes the output and matches its histogram.
@@ -590,7 +597,7 @@ impl LevelSolver {
         if self.wavelet.is_some() {
             self.normalised(&self.pixel_distances)
         } else {
-            self.normalised(&self.distances)
+            self.match_energy()
         }
     }
 
@@ -606,7 +613,7 @@ impl LevelSolver {
     /// [`LevelSolver::energy`].
     #[must_use]
     pub fn match_energy(&self) -> f64 {
-        self.normalised(&self.distances)
+        self.texture_sum / (self.distances.len() * self.setup.size * self.setup.size) as f64
     }
 
     fn normalised(&self, distances: &[f32]) -> f64 {

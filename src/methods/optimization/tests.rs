@@ -570,3 +570,54 @@ fn half_steps_stop_between_the_e_and_m_steps_and_change_no_output() {
     }
     assert_eq!(s.output().unwrap(), whole.output().unwrap());
 }
+
+/// The energy and the IRLS weights made in one pass after an M-step (d^(r/2) as d times the
+/// weight) equal the direct sum of d^(r/2) and `robust_weight` per node, for robust, quadratic
+/// and near-zero distances alike.
+#[test]
+fn energy_and_weights_from_one_pass_equal_the_direct_formulas() {
+    use super::e_step::robust_weight;
+    use super::level::{LevelSetup, LevelSolver};
+    use crate::core::Rng;
+    let exemplar = sample("tiles_64");
+    // The exemplar itself as output: most nodes match exactly (distances under the floor).
+    let noisy = crate::core::testing::noise(64, 64, 3, 9);
+    for output in [&exemplar, &noisy] {
+        for r in [0.8f32, 1.2, 2.0] {
+            let setup = LevelSetup {
+                output_width: 64,
+                output_height: 64,
+                size: 8,
+                spacing: 2,
+                search: Search::PatchMatch,
+                r,
+                mu: 0.0,
+                wrap: false,
+                passes: 3,
+                completeness: 0.0,
+                histogram_matching: 0.0,
+                match_constrained: false,
+                energy: super::Energy::Pixels,
+                wavelet_detail_weight: 1.0,
+            };
+            let mut solver = LevelSolver::new(&exemplar, setup, &mut Rng::new(3));
+            solver.m_step(output, None, &mut Rng::new(4));
+            let d = solver.distances().to_vec();
+            let direct: f64 = d
+                .iter()
+                .map(|&d| f64::from(d).powf(f64::from(r) / 2.0))
+                .sum::<f64>()
+                / (d.len() * 64) as f64;
+            let energy = solver.energy();
+            assert!(
+                (energy - direct).abs() <= 1e-5 * direct,
+                "r {r}: {energy} vs {direct}"
+            );
+            solver.begin_e_step(output);
+            let weights = solver.e_step_weights().expect("an E-step is begun");
+            for (&w, &d) in weights.iter().zip(&d) {
+                assert_eq!(w.to_bits(), robust_weight(d, r).to_bits());
+            }
+        }
+    }
+}

@@ -43,6 +43,7 @@ impl LevelSolver {
         self.refresh_local();
         self.distances.fill(f32::INFINITY);
         self.pixel_distances.fill(f32::INFINITY);
+        self.settle();
     }
 
     /// Moves the matches along a motion: each node takes the match found at `to_old` of its
@@ -63,6 +64,7 @@ impl LevelSolver {
         self.refresh_local();
         self.distances.fill(f32::INFINITY);
         self.pixel_distances.fill(f32::INFINITY);
+        self.settle();
     }
 
     /// The carried matches and, with sub-pixel matches, where each node's content lies beyond
