@@ -437,22 +437,42 @@ mod tests {
         (exemplar, cols, rows, matches, omegas)
     }
 
+    /// The inputs of an E-step without the gradient term; the neighbourhood's size is the
+    /// fall-off's side.
+    fn plain_matches<'a>(
+        exemplar: &'a Image,
+        (cols, rows): (&'a [usize], &'a [usize]),
+        matches: &'a [Pos],
+        node_weights: &'a [f32],
+        falloff: &'a [f32],
+        wrap: bool,
+    ) -> Matches<'a> {
+        Matches {
+            exemplar,
+            cols,
+            rows,
+            matches,
+            node_weights,
+            falloff,
+            size: falloff.len().isqrt(),
+            wrap,
+            mu: 0.0,
+        }
+    }
+
     #[test]
     fn equals_a_brute_force_weighted_average_on_a_tiny_case() {
         let (exemplar, cols, rows, matches, omegas) = setup();
         let size = 4;
         let falloff: Vec<f32> = gaussian_falloff(size, 1);
-        let m = Matches {
-            exemplar: &exemplar,
-            cols: &cols,
-            rows: &rows,
-            matches: &matches,
-            node_weights: &omegas,
-            falloff: &falloff,
-            size,
-            wrap: false,
-            mu: 0.0,
-        };
+        let m = plain_matches(
+            &exemplar,
+            (&cols, &rows),
+            &matches,
+            &omegas,
+            &falloff,
+            false,
+        );
         let mut out = Image::new(9, 7, 2).unwrap();
         e_step(&m, &mut out, None);
         // Brute force: for every output pixel, visit every neighbourhood that contains it.
@@ -497,17 +517,8 @@ mod tests {
                 let omegas: Vec<f32> = (0..nodes).map(|_| 0.5 + rng.next_f32()).collect();
                 let falloff = gaussian_falloff(size, 1);
                 let run = |wrap: bool| {
-                    let m = Matches {
-                        exemplar: &exemplar,
-                        cols: &cols,
-                        rows: &rows,
-                        matches: &matches,
-                        node_weights: &omegas,
-                        falloff: &falloff,
-                        size,
-                        wrap,
-                        mu: 0.0,
-                    };
+                    let m =
+                        plain_matches(&exemplar, (&cols, &rows), &matches, &omegas, &falloff, wrap);
                     let mut out = Image::new(w, h, channels).unwrap();
                     // In two parts, as a session adds them.
                     let mut sums = Sums::new(&out, false);

@@ -58,6 +58,31 @@ pub struct LevelSetup {
     pub wavelet_detail_weight: f32,
 }
 
+#[cfg(test)]
+impl LevelSetup {
+    /// A level of tests: pixel energy, r = 0.8, PatchMatch with three sweeps, spacing a quarter
+    /// of `size`, nothing else on.
+    #[must_use]
+    pub fn plain(output_width: usize, output_height: usize, size: usize) -> Self {
+        LevelSetup {
+            output_width,
+            output_height,
+            size,
+            spacing: size / 4,
+            search: Search::PatchMatch,
+            r: 0.8,
+            mu: 0.0,
+            wrap: false,
+            passes: 3,
+            completeness: 0.0,
+            histogram_matching: 0.0,
+            match_constrained: false,
+            energy: Energy::Pixels,
+            wavelet_detail_weight: 1.0,
+        }
+    }
+}
+
 /// An M-step under way: the output's feature map it compares with, its occurrence penalty,
 /// and where the search stopped.
 struct MStepRun {

@@ -585,20 +585,8 @@ fn energy_and_weights_from_one_pass_equal_the_direct_formulas() {
     for output in [&exemplar, &noisy] {
         for r in [0.8f32, 1.2, 2.0] {
             let setup = LevelSetup {
-                output_width: 64,
-                output_height: 64,
-                size: 8,
-                spacing: 2,
-                search: Search::PatchMatch,
                 r,
-                mu: 0.0,
-                wrap: false,
-                passes: 3,
-                completeness: 0.0,
-                histogram_matching: 0.0,
-                match_constrained: false,
-                energy: super::Energy::Pixels,
-                wavelet_detail_weight: 1.0,
+                ..LevelSetup::plain(64, 64, 8)
             };
             let mut solver = LevelSolver::new(&exemplar, setup, &mut Rng::new(3));
             solver.m_step(output, None, &mut Rng::new(4));

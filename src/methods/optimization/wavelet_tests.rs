@@ -187,20 +187,9 @@ fn with_all_weights_one_the_matches_are_the_pixel_energys() {
     for search in [Search::PatchMatch, Search::Exact] {
         for size in [16, 8] {
             let setup = |energy| LevelSetup {
-                output_width: 64,
-                output_height: 56,
-                size,
-                spacing: size / 4,
                 search,
-                r: 0.8,
-                mu: 0.0,
-                wrap: false,
-                passes: 3,
-                completeness: 0.0,
-                histogram_matching: 0.0,
-                match_constrained: false,
                 energy,
-                wavelet_detail_weight: 1.0,
+                ..LevelSetup::plain(64, 56, size)
             };
             let mut pixels = LevelSolver::new(&exemplar, setup(Energy::Pixels), &mut Rng::new(5));
             pixels.m_step(&smooth, None, &mut Rng::new(6));
