@@ -136,37 +136,24 @@ impl SortedChannels {
                 transfer,
                 ..
             } = scratch;
-            let mut general = false;
             // Whole pixels and nothing fixed (the usual case): the passes in loops over a
             // channel count known at compile time (grey and RGB), which the compiler unrolls and
-            // vectorises.
-            // The arithmetic per value is the general loops' below.
-            if fixed.is_none() && c == stride {
+            // vectorises; the arithmetic per value is the general loops' below. (Other counts,
+            // RGBA among them, are rare enough to keep the package smaller: each instance is
+            // about 1 KB of gzipped wasm.)
+            let plain = fixed.is_none() && c == stride && matches!(c, 1 | 3);
+            if plain {
                 let values = &mut data[range.start * stride..range.end * stride];
-                match c {
-                    1 => {
-                        plain_pass::<1, 4>(*pass, values, lo, hi, scale, starts, transfer, strength)
-                    }
-                    3 => plain_pass::<3, 12>(
-                        *pass, values, lo, hi, scale, starts, transfer, strength,
-                    ),
-                    // (Other counts, RGBA among them, are rare enough to keep the package
-                    // smaller: each instance is about 1 KB of gzipped wasm.)
-                    _ => general = true,
+                if c == 1 {
+                    plain_pass::<1, 4>(*pass, values, lo, hi, scale, starts, transfer, strength);
+                } else {
+                    plain_pass::<3, 12>(*pass, values, lo, hi, scale, starts, transfer, strength);
                 }
-            } else {
-                general = true;
             }
             // All channels in each pass over the interleaved values: the image is read three
-            // times, not three times per channel. (Truncating casts, not floor(): floor is a
-            // library call on baseline x86-64.)
-            let position = |v: f32, k: usize| {
-                let p = greater(0.0, (v - lo[k]) * scale[k]);
-                let b = (p as usize).min(BUCKETS - 1);
-                (b, p - b as f32)
-            };
+            // times, not three times per channel.
             match pass {
-                _ if !general => {}
+                _ if plain => {}
                 0 => {
                     for i in range.filter(|&i| free(i)) {
                         for k in 0..c {
@@ -185,8 +172,9 @@ impl SortedChannels {
                 1 => {
                     for i in range.filter(|&i| free(i)) {
                         for k in 0..c {
-                            starts[k * (BUCKETS + 1) + position(data[i * stride + k], k).0 + 1] +=
-                                1;
+                            starts[k * (BUCKETS + 1)
+                                + bucket(data[i * stride + k], lo[k], scale[k])
+                                + 1] += 1;
                         }
                     }
                 }
@@ -315,8 +303,7 @@ fn plain_pass<const C: usize, const N: usize>(
             });
             for px in values.chunks_exact(C) {
                 for k in 0..C {
-                    let p = greater(0.0, (px[k] - lo[k]) * scale[k]);
-                    counts[k][(p as usize).min(BUCKETS - 1) + 1] += 1;
+                    counts[k][bucket(px[k], lo[k], scale[k]) + 1] += 1;
                 }
             }
         }
@@ -330,6 +317,13 @@ fn plain_pass<const C: usize, const N: usize>(
             }
         }
     }
+}
+
+/// The bucket of value `v` in a channel whose range starts at `lo`, `scale` buckets per unit.
+/// (A truncating cast, not floor(): floor is a library call on baseline x86-64.)
+#[inline]
+fn bucket(v: f32, lo: f32, scale: f32) -> usize {
+    (greater(0.0, (v - lo) * scale) as usize).min(BUCKETS - 1)
 }
 
 /// The exemplar value at output rank `rank` of `pixels`: the sorted exemplar read at the same
