@@ -71,7 +71,7 @@ fn main() {
                 )
                 .expect("quality");
                 println!(
-                    "  quality: coherence {:.5} completeness {:.5} histogram {:.5} flat {:.3}",
+                    "  quality: coherence {:.4e} completeness {:.4e} histogram {:.4e} flat {:.3}",
                     q.coherence, q.completeness, q.histogram, q.flat
                 );
             }

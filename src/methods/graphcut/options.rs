@@ -207,13 +207,21 @@ impl Options {
     /// band of 1/6 to 1/2 of its side (all of 1/3 to 5/6 before). Each placement then extends the
     /// texture by about twice as much: on 16 samples at 256x256, seeds 1-2, 15% fewer patches,
     /// 13% lower total seam cost, coherence 2.5% and completeness 10% better, and at 1024x1024
-    /// 178 placements instead of 328, each with a smaller graph. Sub-patch matching (eq. 4)
-    /// matches the region itself, so it keeps the centred error region (the same change made
-    /// its completeness 17% worse).
-    #[must_use]
+    /// 178 placements instead of 328, each with a smaller graph.
+    ///
+    /// Sub-patch matching (eq. 4) matches the region itself against the exemplar, so the region
+    /// keeps its side (widening it too made completeness 17% worse), but it too has the first
+    /// uncovered pixel a quarter of the way in rather than at its centre: a quarter of the
+    /// region is made texture to match, and the patch around it reaches further past the front.
+    /// On the 32 samples at 256x256, seeds 1-3 (geometric means of after / before): 8% fewer
+    /// patches, 7% lower total seam cost, completeness 13% and histogram 10% better, coherence
+    /// and flat fraction the same; at 1024x1024 from tiles_128 238 placements instead of 308.
+    ///
+    /// An error region the caller sets keeps the centred square of the paper.
     ///
     /// `smallest_patch` is the shorter side of the smallest source's patch (transforms add
     /// smaller sources): every source allowed there must be able to cover the region.
+    #[must_use]
     pub fn fill_region(
         &self,
         exemplar_width: usize,
@@ -221,14 +229,17 @@ impl Options {
         smallest_patch: usize,
     ) -> (usize, f32) {
         let side = self.error_region_side(exemplar_width, exemplar_height);
-        if self.placement != Placement::EntirePatch || self.error_region != 0 {
-            return (side, 0.5);
+        match (self.placement, self.error_region) {
+            (Placement::EntirePatch, 0) => {
+                let front = (2 * smallest_patch / 3)
+                    .max(side)
+                    .min(self.output_width)
+                    .min(self.output_height);
+                (front, 0.25)
+            }
+            (Placement::SubPatch, 0) => (side, 0.25),
+            _ => (side, 0.5),
         }
-        let front = (2 * smallest_patch / 3)
-            .max(side)
-            .min(self.output_width)
-            .min(self.output_height);
-        (front, 0.25)
     }
 
     /// The error-region side actually used.
