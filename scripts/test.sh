@@ -7,16 +7,19 @@ set -uo pipefail
 source "$(dirname "$0")/lib/ensure.sh"
 cd "$ROOT"
 ensure_all || { echo "0 passed, 1 failed"; exit 1; }
+timings=("setup $SECONDS s")
 
 LOG="$(mktemp -d)"
 failed_stages=()
 
 stage() { # name, command...
   local name="$1"; shift
+  local start=$SECONDS
   echo "=== $name: $*"
   if ! "$@" 2>&1 | tee "$LOG/$name.log"; then
     failed_stages+=("$name")
   fi
+  timings+=("$name $((SECONDS - start)) s")
 }
 
 stage native cargo test --tests --lib
@@ -37,6 +40,8 @@ read -r passed failed < <(cat "$LOG"/*.log | awk '
   /^# fail [0-9]+$/ { f += $3 }
   END { print p + 0, f + 0 }')
 rm -rf "$LOG"
+# Where the time went (CI has a budget: keep the whole run well under 20 minutes).
+echo "stage times: $(IFS=,; echo "${timings[*]}" | sed 's/,/, /g'); total $SECONDS s"
 if [ ${#failed_stages[@]} -gt 0 ]; then
   echo "failed stages: ${failed_stages[*]}"
   [ "$failed" -gt 0 ] || failed=${#failed_stages[@]}
