@@ -4,7 +4,8 @@
 //! `BENCH_PLACEMENTS=entire-patch,sub-patch` pick the output size and placements. `scripts/bench.sh` runs
 //! this and the same cases as wasm in Node. `BENCH_WRITE=dir` also writes the outputs as PNGs;
 //! `BENCH_QUALITY=1` prints the quality metrics of each output; `BENCH_SEED` sets the seed;
-//! `BENCH_ERROR_REGION` the error region's side (0: the default, a third of the exemplar).
+//! `BENCH_ERROR_REGION` the error region's side (0: the default, a third of the exemplar);
+//! `BENCH_REFINE` the refinement patches placed once the output is covered (24).
 
 use std::time::Instant;
 
@@ -48,6 +49,8 @@ fn main() {
                     seed: std::env::var("BENCH_SEED").map_or(1, |v| v.parse().expect("BENCH_SEED")),
                     error_region: std::env::var("BENCH_ERROR_REGION")
                         .map_or(0, |v| v.parse().expect("BENCH_ERROR_REGION")),
+                    refinement_patches: std::env::var("BENCH_REFINE")
+                        .map_or(24, |v| v.parse().expect("BENCH_REFINE")),
                     ..Options::default()
                 },
             )

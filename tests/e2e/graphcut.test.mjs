@@ -53,6 +53,34 @@ test('the graph-cut panel places patches live and runs to done', async () => {
   assert.deepEqual(errors, []);
 });
 
+test('sub-patch matching covers the output patch by patch and runs to done', async () => {
+  const { page, errors } = demo;
+  await page.click('button[data-panel="graphcut"]');
+  await page.click('button[data-sample="stone_64"]');
+  await page.waitForSelector('body[data-exemplar="stone 64×64"]');
+  await page.selectOption('#gc-placement', 'sub-patch');
+  await page.dispatchEvent('#gc-placement', 'change');
+  await page.fill('#out-width', '160');
+  await page.fill('#out-height', '96');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.fill('#gc-refine', '4');
+  await page.dispatchEvent('#gc-refine', 'change');
+  await page.click('#step');
+  await page.waitForSelector('body[data-patches="1"]');
+  await page.click('#step');
+  await page.waitForSelector('body[data-patches="2"]');
+  assert.match(await page.textContent('#gc-readout'), /2 patches · .* · covering/);
+  await page.click('#run');
+  await page.waitForSelector('body[data-graphcut-done="true"]', { timeout: 60_000 });
+  assert.match(await page.textContent('#gc-readout'), /patches · .* · covered/);
+  assert.ok(Number(await page.getAttribute('body', 'data-patches')) > 4, 'covering took several patches');
+  assert.match(await page.textContent('#gc-quality'), /coherence .* completeness .* histogram/);
+  const pixels = await canvasPixels(page);
+  assert.ok(new Set(pixels).size > 50, 'the output is a texture, not a flat colour');
+  await page.screenshot({ path: `${RESULTS}/graphcut-sub-patch.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});
+
 test('a merge with painted constraints completes and shows its seam', async () => {
   const { page, errors } = demo;
   await page.click('button[data-panel="merge"]');
