@@ -2,7 +2,7 @@
 // the run reaches done, the seam overlay toggles, and a merge with painted constraints completes.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { canvasPixels, openDemo, qualityInPage, RESULTS } from './harness.mjs';
+import { canvasPixels, openDemo, openPanel, qualityInPage, RESULTS } from './harness.mjs';
 
 let demo;
 before(async () => {
@@ -55,9 +55,7 @@ test('the graph-cut panel places patches live and runs to done', async () => {
 
 test('sub-patch matching covers the output patch by patch and runs to done', async () => {
   const { page, errors } = demo;
-  await page.click('button[data-panel="graphcut"]');
-  await page.click('button[data-sample="stone_64"]');
-  await page.waitForSelector('body[data-exemplar="stone 64×64"]');
+  await openPanel(page, 'graphcut', 'stone_64');
   await page.selectOption('#gc-placement', 'sub-patch');
   await page.dispatchEvent('#gc-placement', 'change');
   await page.fill('#out-width', '160');

@@ -22,6 +22,8 @@ pub mod synthesis;
 pub mod teaching;
 
 #[cfg(test)]
+mod covering_tests;
+#[cfg(test)]
 mod source_window_tests;
 #[cfg(test)]
 mod tests;
