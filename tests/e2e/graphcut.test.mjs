@@ -55,12 +55,9 @@ test('the graph-cut panel places patches live and runs to done', async () => {
 
 test('sub-patch matching covers the output patch by patch and runs to done', async () => {
   const { page, errors } = demo;
-  await openPanel(page, 'graphcut', 'stone_64');
+  await openPanel(page, 'graphcut', 'stone_64', [160, 96]);
   await page.selectOption('#gc-placement', 'sub-patch');
   await page.dispatchEvent('#gc-placement', 'change');
-  await page.fill('#out-width', '160');
-  await page.fill('#out-height', '96');
-  await page.dispatchEvent('#out-height', 'change');
   await page.fill('#gc-refine', '4');
   await page.dispatchEvent('#gc-refine', 'change');
   await page.click('#step');

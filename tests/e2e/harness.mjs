@@ -42,7 +42,7 @@ export const canvasPixels = (page, id = 'output-canvas') =>
 
 /**
  * Opens the panel `panel` with the built-in sample `sample` (e.g. 'gravel_64') and, given
- * `size`, a `size` x `size` output: the set-up most page tests start from.
+ * `size`, a `size` x `size` output (or `[width, height]`): the set-up most page tests start from.
  */
 export async function openPanel(page, panel, sample, size) {
   await page.click(`button[data-panel="${panel}"]`);
@@ -50,8 +50,9 @@ export async function openPanel(page, panel, sample, size) {
   const [name, side] = sample.split('_');
   await page.waitForSelector(`body[data-exemplar="${name} ${side}×${side}"]`);
   if (size) {
-    await page.fill('#out-width', String(size));
-    await page.fill('#out-height', String(size));
+    const [width, height] = Array.isArray(size) ? size : [size, size];
+    await page.fill('#out-width', String(width));
+    await page.fill('#out-height', String(height));
     await page.dispatchEvent('#out-height', 'change');
   }
 }

@@ -10,6 +10,7 @@ use crate::core::testing::noise;
 /// centre when the caller sets the region's side (the paper's centred square).
 #[test]
 fn the_covering_region_has_the_first_uncovered_pixel_a_quarter_in() {
+    const SIDE: usize = 160;
     let exemplar = noise(48, 48, 3, 5);
     for (placement, error_region, lead) in [
         (Placement::EntirePatch, 0, 0.25),
@@ -20,8 +21,8 @@ fn the_covering_region_has_the_first_uncovered_pixel_a_quarter_in() {
         let mut session = Session::new(
             &exemplar,
             Options {
-                output_width: 160,
-                output_height: 160,
+                output_width: SIDE,
+                output_height: SIDE,
                 placement,
                 error_region,
                 ..Options::default()
@@ -36,7 +37,7 @@ fn the_covering_region_has_the_first_uncovered_pixel_a_quarter_in() {
             }
             let region = s.error_region();
             let first = s.canvas.first_uncovered().unwrap();
-            let (x, y) = (first % 160, first / 160);
+            let (x, y) = (first % SIDE, first / SIDE);
             let want = (region.width as f32 * lead) as usize;
             assert!(
                 region.x <= x && x < region.x + region.width,
@@ -49,8 +50,8 @@ fn the_covering_region_has_the_first_uncovered_pixel_a_quarter_in() {
             // Away from the border the lead is exact.
             if x >= want
                 && y >= want
-                && x + region.width <= 160 + want
-                && y + region.height <= 160 + want
+                && x + region.width <= SIDE + want
+                && y + region.height <= SIDE + want
             {
                 assert_eq!(
                     (x - region.x, y - region.y),
