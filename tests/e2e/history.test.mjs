@@ -16,15 +16,23 @@ test('the store thins evenly within its budget and keeps the first step, level e
   const kept = await page.evaluate(async () => {
     const { StepHistory } = await import('/lib/history.js');
     const image = () => ({ data: new Uint8ClampedArray(1000) });
-    const history = new StepHistory(10_000); // room for 10 images
+    const dropped = new Set();
+    const history = new StepHistory(10_000, (entry) => dropped.add(entry.step)); // room for 10 images
     for (let step = 1; step <= 100; step++) {
       // Levels of 30, 30, 40 steps: steps 30 and 60 end a level.
       history.add({ step, levelKey: `:${step <= 30 ? 0 : step <= 60 ? 1 : 2}`, images: [image()] });
       if (history.bytes > 10_000) return { over: step };
     }
-    return { steps: history.entries.map((e) => e.step), ends: history.strip().map((e) => e.step), stride: history.stride };
+    const steps = history.entries.map((e) => e.step);
+    const accounted = steps.every((s) => !dropped.has(s)) && steps.length + dropped.size === 100;
+    const ends = history.strip().map((e) => e.step);
+    const stride = history.stride;
+    history.clear();
+    return { steps, ends, stride, accounted, droppedAll: dropped.size === 100 };
   });
   assert.equal(kept.over, undefined, 'never over the budget');
+  assert.ok(kept.accounted, 'every image let go is handed to onDrop (to close its bitmap), and only those');
+  assert.ok(kept.droppedAll, 'clear() lets go of the rest');
   assert.equal(kept.steps[0], 1, 'the first step stays');
   assert.equal(kept.steps.at(-1), 100, 'the newest stays');
   assert.ok(kept.steps.includes(30) && kept.steps.includes(60), `level ends kept: ${kept.steps}`);

@@ -2,12 +2,21 @@
 // keep per canvas and size, so a live view allocates nothing per frame.
 const cache = new WeakMap();
 
-/** Draws `source` (anything with width, height and renderInto(Uint8ClampedArray)) on `canvas`. */
+/**
+ * Draws `source` (anything with width, height and renderInto(Uint8ClampedArray)) on `canvas`. A
+ * source that already holds its pixels as an ImageData (a worker session's mirror:
+ * `imageData('renderInto')`) is put as it is, with no copy.
+ */
 export function drawInto(canvas, source) {
   const { width, height } = source;
   if (canvas.width !== width || canvas.height !== height) {
     canvas.width = width;
     canvas.height = height;
+  }
+  const direct = source.imageData?.('renderInto');
+  if (direct) {
+    canvas.getContext('2d').putImageData(direct, 0, 0);
+    return;
   }
   let image = cache.get(canvas);
   if (!image || image.width !== width || image.height !== height) {
@@ -18,19 +27,41 @@ export function drawInto(canvas, source) {
   canvas.getContext('2d').putImageData(image, 0, 0);
 }
 
-/** Draws an RGBA picture that `render(buffer)` writes over what `canvas` shows (alpha-blended). */
+// One scratch layer per canvas that overlays are drawn on: a live view at 1024x1024 would otherwise
+// allocate a canvas and 4 MB of pixels per overlay per frame, and their collection shows up as
+// main-thread pauses.
+const layers = new WeakMap();
+
+function layerFor(canvas, width, height) {
+  let layer = layers.get(canvas);
+  if (!layer || layer.canvas.width !== width || layer.canvas.height !== height) {
+    const c = document.createElement('canvas');
+    c.width = width;
+    c.height = height;
+    layer = { canvas: c, image: new ImageData(width, height) };
+    layers.set(canvas, layer);
+  }
+  return layer;
+}
+
+/**
+ * Draws an RGBA picture over what `canvas` shows (alpha-blended): `render(buffer)` writes it into a
+ * cleared buffer, or `render` is an ImageData of `width` x `height` already.
+ */
 export function drawOverlay(canvas, width, height, render, alpha = 1) {
-  const layer = document.createElement('canvas');
-  layer.width = width;
-  layer.height = height;
-  const image = new ImageData(width, height);
-  render(image.data);
-  layer.getContext('2d').putImageData(image, 0, 0);
+  const layer = layerFor(canvas, width, height);
+  if (typeof render === 'function') {
+    layer.image.data.fill(0);
+    render(layer.image.data);
+    layer.canvas.getContext('2d').putImageData(layer.image, 0, 0);
+  } else {
+    layer.canvas.getContext('2d').putImageData(render, 0, 0);
+  }
   const ctx = canvas.getContext('2d');
   ctx.save();
   ctx.globalAlpha = alpha;
   ctx.imageSmoothingEnabled = false;
-  ctx.drawImage(layer, 0, 0, canvas.width, canvas.height);
+  ctx.drawImage(layer.canvas, 0, 0, canvas.width, canvas.height);
   ctx.restore();
 }
 

@@ -26,17 +26,20 @@ function labelOf(step, event) {
   return parts.join(' · ');
 }
 
-/** A small picture of `canvases` side by side, for the strip. */
-function thumbnail(canvases) {
-  const widths = canvases.map((c) => Math.max(1, Math.round((c.width / c.height) * THUMB_HEIGHT)));
+/** A small picture of the step's `images` (snapshots, see below) side by side, for the strip. */
+function thumbnail(images) {
+  const widths = images.map((c) => Math.max(1, Math.round((c.width / c.height) * THUMB_HEIGHT)));
   const thumb = document.createElement('canvas');
-  thumb.width = widths.reduce((a, b) => a + b, 0) + 2 * (canvases.length - 1);
+  thumb.width = widths.reduce((a, b) => a + b, 0) + 2 * (images.length - 1);
   thumb.height = THUMB_HEIGHT;
-  const ctx = thumb.getContext('2d');
-  let x = 0;
-  canvases.forEach((c, k) => {
-    ctx.drawImage(c, x, 0, widths[k], THUMB_HEIGHT);
-    x += widths[k] + 2;
+  // Drawn when the snapshots arrive, off the step's own task.
+  Promise.all(images.map((image) => image.ready)).then(() => {
+    const ctx = thumb.getContext('2d');
+    let x = 0;
+    images.forEach((image, k) => {
+      if (image.bitmap) ctx.drawImage(image.bitmap, x, 0, widths[k], THUMB_HEIGHT);
+      x += widths[k] + 2;
+    });
   });
   return thumb;
 }
@@ -47,14 +50,28 @@ function thumbnail(canvases) {
  * live view (the page pauses a running session then).
  */
 export function createHistoryView({ range, live, info, strip, canvases, plots, onScrub }) {
-  const history = new StepHistory(HISTORY_BUDGET);
+  const history = new StepHistory(HISTORY_BUDGET, (entry) => entry.images.forEach((image) => image.bitmap?.close()));
   let steps = 0;
   let shown = null; // the entry on the canvases while scrubbing; null: the live view
   let liveImages = null; // what the canvases showed when scrubbing began
   let liveTexts = null; // the readouts' own nodes then
 
-  const grab = (list) => list.filter((c) => c.width > 0 && c.height > 0)
-    .map((c) => ({ canvas: c, image: c.getContext('2d').getImageData(0, 0, c.width, c.height) }));
+  const drawn = (list) => list.filter((c) => c.width > 0 && c.height > 0);
+  const grab = (list) => drawn(list).map((c) => ({ canvas: c, image: c.getContext('2d').getImageData(0, 0, c.width, c.height) }));
+
+  /**
+   * What each canvas shows now, kept as an ImageBitmap: the snapshot is taken at the call and
+   * costs next to nothing on the main thread, where getImageData on a 1024x1024 canvas took
+   * 6-10 ms per step (it waits for the canvas's drawing and converts every pixel). The bitmap
+   * arrives a moment later; `put` draws it then if its step is still shown.
+   */
+  const snapshot = (list) => drawn(list).map((c) => {
+    const image = { width: c.width, height: c.height, bitmap: null };
+    image.ready = createImageBitmap(c).then((bitmap) => {
+      image.bitmap = bitmap;
+    });
+    return { canvas: c, image };
+  });
 
   function put(images) {
     for (const { canvas, image } of images) {
@@ -62,7 +79,18 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
         canvas.width = image.width;
         canvas.height = image.height;
       }
-      canvas.getContext('2d').putImageData(image, 0, 0);
+      const ctx = canvas.getContext('2d');
+      if (image.data) {
+        ctx.putImageData(image, 0, 0);
+      } else if (image.bitmap) {
+        ctx.save();
+        ctx.globalCompositeOperation = 'copy';
+        ctx.drawImage(image.bitmap, 0, 0);
+        ctx.restore();
+      } else {
+        const entry = shown;
+        image.ready.then(() => shown === entry && put([{ canvas, image }]));
+      }
     }
   }
 
@@ -160,7 +188,7 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
       // A step that was in flight when the user began scrubbing: its drawing is the live view now.
       if (shown) goLive({ restore: false });
       steps += 1;
-      const grabbed = grab(canvases());
+      const grabbed = snapshot(canvases());
       if (grabbed.length === 0) return;
       const levelKey = event.level == null ? null : `${event.energyKind ?? ''}${event.method ?? ''}:${event.level}`;
       history.add({
@@ -171,7 +199,7 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
         images: grabbed.map((g) => g.image),
         plots: plots().map((canvas) => ({ canvas, length: plotLength(canvas) })),
         texts: copyTexts(),
-        thumb: thumbnail(grabbed.map((g) => g.canvas)),
+        thumb: thumbnail(grabbed.map((g) => g.image)),
       });
       renderStrip();
       describe();

@@ -8,13 +8,20 @@
 /** The budget, stated on the page and in the README: 64 MiB of RGBA pixels. */
 export const HISTORY_BUDGET = 64 * 1024 * 1024;
 
+/** Bytes of one kept image: an ImageData, or a snapshot { width, height } (see history-view.js). */
+const bytesOf = (image) => image.data?.length ?? image.width * image.height * 4;
+
 export class StepHistory {
-  constructor(budget = HISTORY_BUDGET) {
+  /** `onDrop(entry)` is called for every entry the store lets go (to free what it holds). */
+  constructor(budget = HISTORY_BUDGET, onDrop = () => {}) {
     this.budget = budget;
+    this.onDrop = onDrop;
+    this.entries = [];
     this.clear();
   }
 
   clear() {
+    for (const entry of this.entries) this.onDrop(entry);
     /** Oldest first; each `{ step, levelKey, levelEnd, label, images, bytes, ... }`. */
     this.entries = [];
     this.bytes = 0;
@@ -29,7 +36,7 @@ export class StepHistory {
    * kept as that level's last image.
    */
   add(entry) {
-    const stored = { levelEnd: false, ...entry, bytes: entry.images.reduce((n, image) => n + image.data.length, 0) };
+    const stored = { levelEnd: false, ...entry, bytes: entry.images.reduce((n, image) => n + bytesOf(image), 0) };
     const last = this.entries.at(-1);
     if (last && stored.levelKey !== last.levelKey && last.levelKey != null) last.levelEnd = true;
     // The newest image is always kept; the one it replaces stays only where the stride says.
@@ -47,6 +54,7 @@ export class StepHistory {
   #removeAt(index) {
     const [gone] = this.entries.splice(index, 1);
     this.bytes -= gone.bytes;
+    this.onDrop(gone);
   }
 
   /** Doubles the stride and drops what it no longer keeps. Each call removes at least one image:
@@ -60,6 +68,8 @@ export class StepHistory {
       this.#removeAt(0);
       return;
     }
+    const keep = new Set(kept);
+    for (const entry of this.entries) if (!keep.has(entry)) this.onDrop(entry);
     this.entries = kept;
     this.bytes = kept.reduce((n, e) => n + e.bytes, 0);
   }

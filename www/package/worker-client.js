@@ -193,6 +193,17 @@ export class MirrorSession {
     target.set(new Uint8ClampedArray(view.image));
   }
 
+  /**
+   * The last fetched `view` as an ImageData over the transferred pixels (no copy), or null where
+   * there is no ImageData (Node) or the view was never fetched. Valid until the next step.
+   */
+  imageData(name) {
+    const view = this.state.views[name];
+    if (!view || typeof ImageData === 'undefined') return null;
+    view.imageData ??= new ImageData(new Uint8ClampedArray(view.image), view.width, view.height);
+    return view.imageData;
+  }
+
   result(name) {
     return this.state.calls[name];
   }

@@ -67,6 +67,9 @@ export function createPanel(ui) {
     };
   }
 
+  // A view as the worker sent it (no copy), or a copy of it.
+  const view = (name) => session.imageData(name) ?? ((b) => session.view(name, b));
+
   function draw() {
     if (!session) return;
     const canvas = ui.outputCanvas;
@@ -75,12 +78,12 @@ export function createPanel(ui) {
       canvas.width = width;
       canvas.height = height;
       canvas.getContext('2d').clearRect(0, 0, width, height);
-      drawOverlay(canvas, width, height, (b) => session.view('renderLabels', b));
+      drawOverlay(canvas, width, height, view('renderLabels'));
     } else {
       drawInto(canvas, session);
     }
-    if (ui.$('gc-heat').checked) drawOverlay(canvas, width, height, (b) => session.view('renderSeamCost', b), 0.85);
-    if (ui.$('gc-seams').checked) drawOverlay(canvas, width, height, (b) => session.view('renderSeams', b));
+    if (ui.$('gc-heat').checked) drawOverlay(canvas, width, height, view('renderSeamCost'), 0.85);
+    if (ui.$('gc-seams').checked) drawOverlay(canvas, width, height, view('renderSeams'));
     if (lastEvent?.patch && !lastEvent.done) {
       strokeRect(canvas, lastEvent.rect, width, height, '#e0a458');
       strokeRect(canvas, lastEvent.region, width, height, '#7fd1ff', [3, 2]);
