@@ -80,13 +80,29 @@ pub fn sub_pixel_coherence(exemplar: &Image, output: &Image) -> Result<f64> {
 }
 
 /// Mean over the patches of `from` (stride 2) of the per-value MSE to the nearest patch of `to`.
+/// Each search starts from the matches of the query to the left and the one above, moved on by
+/// the stride (see [`PatchIndex::nearest_from`]).
 fn directed(from: &Image, to: &Image) -> f64 {
     let index = PatchIndex::new(to.data(), to.width(), to.height(), PATCH);
     let values = (PATCH * PATCH * 3) as f64;
     let (mut total, mut count) = (0.0f64, 0usize);
+    let columns = (from.width() - PATCH) / STRIDE + 1;
+    // The matches of the previous row of queries, by column.
+    let mut above: Vec<Option<(usize, usize)>> = vec![None; columns];
     for y in (0..=from.height() - PATCH).step_by(STRIDE) {
-        for x in (0..=from.width() - PATCH).step_by(STRIDE) {
-            total += f64::from(index.nearest(from.data(), from.width(), x, y)) / values;
+        let mut left: Option<(usize, usize)> = None;
+        for (column, x) in (0..=from.width() - PATCH).step_by(STRIDE).enumerate() {
+            let mut hints = [(usize::MAX, usize::MAX); 2];
+            if let Some((mx, my)) = left {
+                hints[0] = (mx + STRIDE, my);
+            }
+            if let Some((mx, my)) = above[column] {
+                hints[1] = (mx, my + STRIDE);
+            }
+            let (distance, at) = index.nearest_from(from.data(), from.width(), x, y, &hints);
+            left = Some(at);
+            above[column] = Some(at);
+            total += f64::from(distance) / values;
             count += 1;
         }
     }
