@@ -47,8 +47,7 @@ pub struct PatchIndex<'a> {
     max_x: usize,
     max_y: usize,
     /// The candidates in tree order: summaries and top-left corners.
-    summaries: Vec<Summary>,
-    corners: Vec<(u32, u32)>,
+    candidates: Vec<(Summary, (u32, u32))>,
     /// The k-d tree, root first.
     nodes: Vec<Node>,
 }
@@ -143,8 +142,7 @@ impl<'a> PatchIndex<'a> {
             size,
             max_x: width - size,
             max_y: height - size,
-            summaries: items.iter().map(|i| i.0).collect(),
-            corners: items.iter().map(|i| i.1).collect(),
+            candidates: items,
             nodes,
         }
     }
@@ -221,10 +219,11 @@ impl<'a> PatchIndex<'a> {
         let node = &self.nodes[n as usize];
         if node.left == 0 {
             for i in node.start as usize..node.end as usize {
-                if squared_distance(&q.summary, &self.summaries[i]) >= best.0 {
+                let (summary, (x, y)) = &self.candidates[i];
+                if squared_distance(&q.summary, summary) >= best.0 {
                     continue;
                 }
-                let (x, y) = (self.corners[i].0 as usize, self.corners[i].1 as usize);
+                let (x, y) = (*x as usize, *y as usize);
                 let d = self.ssd(q.values, q.width, q.x, q.y, x, y, best.0);
                 if d < best.0 {
                     *best = (d, (x, y));
