@@ -5,11 +5,15 @@ use wasm_bindgen::prelude::*;
 use super::error::JsResult;
 use super::exemplar::Exemplar;
 use super::options::object;
+use crate::core::budget::DEFAULT_MEMORY_BUDGET_MIB;
+use crate::core::codec::check_rgba8;
 use crate::core::from_rgba8;
-use crate::methods::quality::quality;
+use crate::methods::quality::{quality, working_set};
 
 /// Scores an output (RGBA8 pixels, e.g. what a session rendered) against its exemplar:
-/// `{ coherence, completeness, histogram, flat }`, all lower-is-better (see the README).
+/// `{ coherence, completeness, histogram, flat }`, all lower-is-better (see the README). An
+/// output whose scoring would need more than the default memory budget (4096x4096 does) is
+/// refused before its pixels are converted.
 #[wasm_bindgen(js_name = measureQuality)]
 pub fn measure_quality(
     exemplar: &Exemplar,
@@ -17,7 +21,15 @@ pub fn measure_quality(
     width: u32,
     height: u32,
 ) -> JsResult<JsValue> {
-    let output = from_rgba8(width as usize, height as usize, rgba)?;
+    let (w, h) = (width as usize, height as usize);
+    check_rgba8(w, h, rgba.len())?;
+    let ex = exemplar.image();
+    working_set((ex.width(), ex.height()), (w, h)).check(
+        &format!("output {w}x{h}"),
+        "measuring quality",
+        DEFAULT_MEMORY_BUDGET_MIB,
+    )?;
+    let output = from_rgba8(w, h, rgba)?;
     let q = quality(exemplar.image(), &output)?;
     Ok(object(&[
         ("coherence", q.coherence.into()),

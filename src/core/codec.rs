@@ -89,17 +89,24 @@ fn to_rgba<T: Copy>(raw: &[T], channels: usize, value: impl Fn(T) -> f32) -> Vec
 
 /// Wraps raw RGBA8 pixels (a canvas `ImageData`), compacted like [`decode`].
 pub fn from_rgba8(width: usize, height: usize, rgba: &[u8]) -> Result<Image> {
+    check_rgba8(width, height, rgba.len())?;
+    let data: Vec<f32> = rgba.iter().map(|&v| f32::from(v) / 255.0).collect();
+    Image::from_vec(width, height, 4, data)?.compact()
+}
+
+/// Fails unless `len` bytes can be a `width` x `height` RGBA8 image of an accepted size (what
+/// [`from_rgba8`] checks before it converts anything).
+pub fn check_rgba8(width: usize, height: usize, len: usize) -> Result<()> {
     check_size("image", width, height)?;
     let expected = width * height * 4;
-    if rgba.len() != expected {
+    if len != expected {
         return Err(Error::LengthMismatch {
             what: "RGBA pixel data",
             expected,
-            actual: rgba.len(),
+            actual: len,
         });
     }
-    let data: Vec<f32> = rgba.iter().map(|&v| f32::from(v) / 255.0).collect();
-    Image::from_vec(width, height, 4, data)?.compact()
+    Ok(())
 }
 
 /// Converts a value in 0..1 to a byte, rounding to nearest and clamping out-of-range values.

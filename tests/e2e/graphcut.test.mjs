@@ -76,6 +76,27 @@ test('sub-patch matching covers the output patch by patch and runs to done', asy
   assert.deepEqual(errors, []);
 });
 
+test('an output wider than 512 is scored on its central 512 columns, and the readout says so', async () => {
+  const { page, errors } = demo;
+  await openPanel(page, 'graphcut', 'gravel_64', [640, 96]);
+  await page.fill('#gc-refine', '0');
+  await page.dispatchEvent('#gc-refine', 'change');
+  await page.click('#run');
+  await page.waitForSelector('body[data-graphcut-done="true"]', { timeout: 60_000 });
+  assert.match(await page.textContent('#gc-quality'), /^quality \(of the central 512×96 of 640×96\) .*coherence/);
+  assert.equal(await page.getAttribute('#gc-quality', 'data-window'), '64,0,512,96');
+  // The same figures as the window cut out of the canvas (without the seam overlay) and scored directly.
+  await page.uncheck('#gc-seams');
+  const pixels = await canvasPixels(page);
+  await page.check('#gc-seams');
+  const cut = [];
+  for (let y = 0; y < 96; y++) cut.push(...pixels.slice((y * 640 + 64) * 4, (y * 640 + 576) * 4));
+  const direct = await qualityInPage(page, 'gravel_64', cut, 512, 96);
+  assert.equal(Number(await page.getAttribute('#gc-quality', 'data-coherence')), direct.coherence);
+  assert.equal(Number(await page.getAttribute('#gc-quality', 'data-completeness')), direct.completeness);
+  assert.deepEqual(errors, []);
+});
+
 test('a merge with painted constraints completes and shows its seam', async () => {
   const { page, errors } = demo;
   await page.click('button[data-panel="merge"]');

@@ -119,9 +119,13 @@ export class WorkerSession {
     return imageOf(await this.worker.request({ type: 'render', session: this.id, method, width, height }));
   }
 
-  /** measureQuality of the current output against the exemplar the session was made from. */
-  quality() {
-    return this.worker.request({ type: 'quality', session: this.id });
+  /**
+   * measureQuality of the current output against the exemplar the session was made from. With
+   * `maxSide`, an output larger than that is scored on its central `maxSide` x `maxSide` window,
+   * which the result names (`window: { x, y, width, height }`).
+   */
+  quality({ maxSide } = {}) {
+    return this.worker.request({ type: 'quality', session: this.id, maxSide });
   }
 
   free() {
@@ -214,7 +218,7 @@ export class MirrorSession {
   getter(name) { return this.state.getters[name]; }
 
   renderInto(target) { this.view('renderInto', target); }
-  quality() { return this.remote.quality(); }
+  quality(options) { return this.remote.quality(options); }
   free() { return this.remote.free(); }
 }
 

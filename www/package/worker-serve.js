@@ -9,7 +9,9 @@
 //   render { method, width?, height? } -> { image, width, height } (renderInto, renderOffsetMap, renderSeams, ...)
 //   snapshot { views, calls, getters }   rendered views, method results and getters in one reply
 //     (step takes the same keys, plus finalViews / finalCalls wanted when that step finishes)
-//   quality                     measureQuality of the current output against the session's exemplar
+//   quality { maxSide? }        measureQuality of the current output against the session's exemplar
+//                               (of its central maxSide x maxSide window when it is larger; the
+//                               reply then names the window)
 //   free
 // Any class the package exports can be made here (a session added in Rust needs nothing in this
 // file); constructor arguments of the form { bytes } or { rgba, width, height } become Exemplars,
@@ -21,6 +23,30 @@ const isExemplarWire = (a) =>
 // A video clip travels as { clip: { width, height, frames, rgba } } (the frames' RGBA one after the
 // other) and becomes a VideoClip.
 const isClipWire = (a) => a !== null && typeof a === 'object' && Object.keys(a).length === 1 && a.clip?.rgba !== undefined;
+
+/**
+ * The central `maxSide` x `maxSide` (at most) window of a `width` x `height` output, or null when
+ * the output fits (or no `maxSide` is given). Scoring a whole 4096x4096 output takes minutes and
+ * more memory than the default budget allows; its centre is a sample of it.
+ */
+function centralWindow(width, height, maxSide) {
+  if (maxSide == null) return null;
+  if (!Number.isInteger(maxSide) || maxSide < 7) throw new Error(`quality: maxSide must be an integer of at least 7, got ${maxSide}`);
+  if (width <= maxSide && height <= maxSide) return null;
+  const w = Math.min(width, maxSide);
+  const h = Math.min(height, maxSide);
+  return { x: Math.floor((width - w) / 2), y: Math.floor((height - h) / 2), width: w, height: h };
+}
+
+/** The RGBA pixels of `win` out of a `width`-wide RGBA image. */
+function cropRgba(rgba, width, win) {
+  const out = new Uint8ClampedArray(win.width * win.height * 4);
+  for (let row = 0; row < win.height; row++) {
+    const from = ((win.y + row) * width + win.x) * 4;
+    out.set(rgba.subarray(from, from + win.width * 4), row * win.width * 4);
+  }
+  return out;
+}
 
 export function serve(lib, { post, listen }) {
   const toClip = ({ clip }) => {
@@ -138,8 +164,11 @@ export function serve(lib, { post, listen }) {
         if (!exemplar) throw new Error('this session has no exemplar to measure against');
         const rgba = new Uint8ClampedArray(session.width * session.height * 4);
         session.renderInto(rgba);
-        const q = lib.measureQuality(exemplar, rgba, session.width, session.height);
-        reply(id, { type: 'result', value: { coherence: q.coherence, completeness: q.completeness, histogram: q.histogram, flat: q.flat } });
+        const win = centralWindow(session.width, session.height, message.maxSide);
+        const pixels = win ? cropRgba(rgba, session.width, win) : rgba;
+        const q = lib.measureQuality(exemplar, pixels, win?.width ?? session.width, win?.height ?? session.height);
+        const value = { coherence: q.coherence, completeness: q.completeness, histogram: q.histogram, flat: q.flat };
+        reply(id, { type: 'result', value: win ? { ...value, window: win } : value });
       } else if (type === 'step') {
         const event = session.step();
         const body = { type: 'result', value: { event } };

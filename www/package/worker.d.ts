@@ -62,6 +62,11 @@ export class WorkerSession<K extends SessionKind = SessionKind> {
   call<T = unknown>(method: string, ...args: unknown[]): Promise<T>;
   /** A view rendered in the worker. */
   render(method?: RenderMethod, width?: number, height?: number): Promise<WorkerImage>;
+  /**
+   * measureQuality of the current output against the session's exemplar; with `maxSide`, a larger
+   * output is scored on its central `maxSide` x `maxSide` window, which the result names.
+   */
+  quality(options?: { maxSide?: number }): Promise<import('./index.js').Quality & { window?: { x: number; y: number; width: number; height: number } }>;
   free(): Promise<void>;
 }
 

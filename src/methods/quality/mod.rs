@@ -18,6 +18,7 @@
 pub mod detail;
 mod nearest;
 
+use crate::core::budget::{DEFAULT_MEMORY_BUDGET_MIB, WorkingSet, image_bytes};
 use crate::core::{Error, Image, Result};
 use nearest::PatchIndex;
 
@@ -49,6 +50,15 @@ pub fn quality(exemplar: &Image, output: &Image) -> Result<Quality> {
             });
         }
     }
+    working_set(
+        (exemplar.width(), exemplar.height()),
+        (output.width(), output.height()),
+    )
+    .check(
+        &format!("output {}x{}", output.width(), output.height()),
+        "measuring quality",
+        DEFAULT_MEMORY_BUDGET_MIB,
+    )?;
     let ex = exemplar.with_channels(3)?;
     let out = output.with_channels(3)?;
     Ok(Quality {
@@ -57,6 +67,26 @@ pub fn quality(exemplar: &Image, output: &Image) -> Result<Quality> {
         histogram: histogram_distance(&ex, &out),
         flat: detail::flat_fraction(&out, detail::flat_threshold(&ex)),
     })
+}
+
+/// What [`quality`] holds at its peak for an exemplar and an output of the given sizes: both
+/// images as RGB, the index of the output's patches (completeness searches them; the
+/// exemplar's index, for coherence, is gone by then) and the output's local contrast. A
+/// 4096x4096 output would need about 1.3 GiB, more than the default budget, so it is refused
+/// with an error rather than run the wasm memory out; a 2048x2048 one needs about 340 MiB.
+#[must_use]
+pub fn working_set(exemplar: (usize, usize), output: (usize, usize)) -> WorkingSet {
+    let patches = |(w, h): (usize, usize)| {
+        (w.saturating_sub(PATCH) + 1) as u64 * (h.saturating_sub(PATCH) + 1) as u64
+    };
+    WorkingSet::new()
+        .with("exemplar", image_bytes(exemplar.0, exemplar.1, 3))
+        .with("output", image_bytes(output.0, output.1, 3))
+        .with(
+            "patch index",
+            patches(output).max(patches(exemplar)) * nearest::BYTES_PER_PATCH,
+        )
+        .with("local contrast", image_bytes(output.0, output.1, 1))
 }
 
 /// Coherence against the exemplar at whole and half-pixel positions: each output patch's
@@ -245,6 +275,33 @@ mod tests {
             let sd = (lum.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / 49.0).sqrt();
             assert!((f64::from(c) - sd).abs() < 1e-4, "{c} vs {sd}");
         }
+    }
+
+    #[test]
+    fn an_output_whose_index_would_pass_the_memory_budget_is_refused_by_its_estimate() {
+        use crate::core::budget::DEFAULT_MEMORY_BUDGET_MIB;
+        let mib = |w: usize| working_set((128, 128), (w, w)).bytes() as f64 / (1u64 << 20) as f64;
+        assert!(
+            (300.0..400.0).contains(&mib(2048)),
+            "2048: {} MiB",
+            mib(2048)
+        );
+        assert!(
+            mib(4096) > DEFAULT_MEMORY_BUDGET_MIB as f64,
+            "4096: {} MiB",
+            mib(4096)
+        );
+        // quality() checks the estimate before it converts or indexes anything: a grey
+        // 4096x4096 output (64 MiB here) is refused with the size, the estimate and the limit.
+        let ex = sample("gravel_64");
+        let big = Image::new(4096, 4096, 1).unwrap();
+        let msg = quality(&ex, &big).unwrap_err().to_string();
+        assert!(
+            msg.contains("output 4096x4096")
+                && msg.contains("patch index")
+                && msg.contains("1024 MiB"),
+            "{msg}"
+        );
     }
 
     #[test]

@@ -26,6 +26,12 @@ type Summary = [f32; D];
 /// Candidates per leaf of the tree.
 const LEAF: usize = 32;
 
+/// Bytes the index holds per candidate patch, at most: its summary and corner (56), and its
+/// share of the tree's nodes (leaves hold at least `LEAF / 2` candidates, so there are at most
+/// `4 / LEAF` nodes per candidate, of 112 bytes each).
+pub const BYTES_PER_PATCH: u64 =
+    (std::mem::size_of::<(Summary, (u32, u32))>() + 4 * std::mem::size_of::<Node>() / LEAF) as u64;
+
 /// A node of the k-d tree: the candidates `start..end` (in tree order) and their bounding box;
 /// an inner node's children hold the two halves of its range.
 struct Node {
