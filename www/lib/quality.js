@@ -3,9 +3,9 @@ import { measureQuality } from '../pkg/texsynth.js';
 
 /**
  * Outputs larger than this on a side are scored on their central window of this side, so the
- * figures come within a few seconds of the run's end: scoring takes about 2.6 s at 512x512 in
- * wasm, 21 s at 1024x1024 (graph cut of tiles_128), and a whole 4096x4096 output would take
- * many minutes and more memory than the budget allows (measureQuality refuses it).
+ * figures come within a second or so of the run's end: scoring takes 0.6-1 s at 512x512 in
+ * wasm, about 3 s at 1024x1024 (graph cut of tiles_128; noisy outputs longer), and a whole
+ * 4096x4096 output would need more memory than the budget allows (measureQuality refuses it).
  */
 export const QUALITY_MAX_SIDE = 512;
 
