@@ -412,20 +412,7 @@ mod tests {
         let index = PatchIndex::new(&ex, ew, eh, size);
         for qy in 0..=oh - size {
             for qx in 0..=ow - size {
-                let mut brute = f32::INFINITY;
-                for y in 0..=eh - size {
-                    for x in 0..=ew - size {
-                        let mut d = 0.0;
-                        for dy in 0..size {
-                            for dx in 0..size * 3 {
-                                let a = out[((qy + dy) * ow + qx) * 3 + dx];
-                                let b = ex[((y + dy) * ew + x) * 3 + dx];
-                                d += (a - b) * (a - b);
-                            }
-                        }
-                        brute = brute.min(d);
-                    }
-                }
+                let brute = brute(&ex, ew, eh, &out, ow, qx, qy, size);
                 let fast = index.nearest(&out, ow, qx, qy);
                 assert!(
                     (fast - brute).abs() <= 1e-4 * brute.max(1e-3),
