@@ -85,6 +85,7 @@ test('an output wider than 512 is scored on its central 512 columns, and the rea
   await page.waitForSelector('body[data-graphcut-done="true"]', { timeout: 60_000 });
   assert.match(await page.textContent('#gc-quality'), /^quality \(of the central 512×96 of 640×96\) .*coherence/);
   assert.equal(await page.getAttribute('#gc-quality', 'data-window'), '64,0,512,96');
+  await page.screenshot({ path: `${RESULTS}/graphcut-quality-window.png`, fullPage: true });
   // The same figures as the window cut out of the canvas (without the seam overlay) and scored directly.
   await page.uncheck('#gc-seams');
   const pixels = await canvasPixels(page);
