@@ -50,7 +50,13 @@ function thumbnail(images) {
  * live view (the page pauses a running session then).
  */
 export function createHistoryView({ range, live, info, strip, canvases, plots, onScrub }) {
-  const history = new StepHistory(HISTORY_BUDGET, (entry) => entry.images.forEach((image) => image.bitmap?.close()));
+  // A dropped step's bitmaps are closed now, or as they arrive.
+  const release = (entry) => entry.images.forEach((image) => {
+    image.dropped = true;
+    image.bitmap?.close();
+    image.bitmap = null;
+  });
+  const history = new StepHistory(HISTORY_BUDGET, release);
   let steps = 0;
   let shown = null; // the entry on the canvases while scrubbing; null: the live view
   let liveImages = null; // what the canvases showed when scrubbing began
@@ -66,10 +72,12 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
    * arrives a moment later; `put` draws it then if its step is still shown.
    */
   const snapshot = (list) => drawn(list).map((c) => {
-    const image = { width: c.width, height: c.height, bitmap: null };
+    const image = { width: c.width, height: c.height, bitmap: null, dropped: false };
+    // A snapshot that fails leaves its step without a picture rather than an error.
     image.ready = createImageBitmap(c).then((bitmap) => {
-      image.bitmap = bitmap;
-    });
+      if (image.dropped) bitmap.close();
+      else image.bitmap = bitmap;
+    }, () => {});
     return { canvas: c, image };
   });
 
@@ -89,7 +97,7 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
         ctx.restore();
       } else {
         const entry = shown;
-        image.ready.then(() => shown === entry && put([{ canvas, image }]));
+        image.ready.then(() => shown === entry && image.bitmap && put([{ canvas, image }]));
       }
     }
   }
