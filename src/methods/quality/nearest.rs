@@ -191,7 +191,8 @@ impl<'a> PatchIndex<'a> {
             .map(|(x, y)| (summary(data, width, size, x, y), (x as u32, y as u32)))
             .collect();
         dedup(&mut items, data, width, size);
-        let mut nodes = Vec::with_capacity(2 * items.len() / LEAF + 1);
+        // At most 4 / LEAF nodes per candidate (see BYTES_PER_PATCH): no reallocation.
+        let mut nodes = Vec::with_capacity(4 * items.len() / LEAF + 1);
         let len = items.len();
         build(&mut items, 0, len, &mut nodes);
         PatchIndex {
