@@ -3,6 +3,8 @@
 //! options). Prints the first frame's time and the frames per second of the frames after it,
 //! the figure the scaling table's flow row gives for wasm. No quality is measured (see
 //! `flow_detail` for that): at 512x512 measuring one frame costs more than making it.
+//! `FLOW_VERBOSE=1` also prints every iteration of the frames after the first (its size, how
+//! many matches changed, the energies) and the time spent per neighbourhood size.
 
 use std::time::Instant;
 
@@ -30,8 +32,28 @@ fn main() {
     let start = Instant::now();
     let mut session = FlowSession::new(&exemplar, flow, options).expect("session");
     let mut first = None;
+    let mut per_size = std::collections::BTreeMap::<usize, (f64, usize)>::new();
     loop {
+        let t = Instant::now();
         let event = session.step().expect("step");
+        if first.is_some() {
+            let e = per_size.entry(event.size).or_default();
+            e.0 += t.elapsed().as_secs_f64() * 1e3;
+            if matches!(event.kind, FlowEventKind::Iteration | FlowEventKind::Frame) {
+                e.1 += 1;
+                if std::env::var_os("FLOW_VERBOSE").is_some() {
+                    println!(
+                        "  frame {} w {} iteration {}: {} changed, texture {:.6}, flow {:.6}",
+                        event.frame,
+                        event.size,
+                        event.iteration,
+                        event.changed,
+                        event.texture_energy,
+                        event.flow_energy
+                    );
+                }
+            }
+        }
         if matches!(event.kind, FlowEventKind::Frame | FlowEventKind::Done) && first.is_none() {
             first = Some(start.elapsed().as_secs_f64());
         }
@@ -40,6 +62,11 @@ fn main() {
         }
     }
     let total = start.elapsed().as_secs_f64();
+    if std::env::var_os("FLOW_VERBOSE").is_some() {
+        for (size, (ms, n)) in &per_size {
+            println!("  w {size}: {ms:.0} ms over {n} iterations");
+        }
+    }
     let first = first.expect("a first frame");
     println!(
         "{name} {size}x{size}: first frame {first:.2} s, then {} frames at {:.2} fps ({:.0} ms a frame)",
