@@ -6,7 +6,9 @@
 //! (`quality::sub_pixel_coherence`: sub-pixel matches place content between pixels). Options from the
 //! environment: `HIST` (histogramMatching, 1), `LAMBDA` (0.2),
 //! `FRAME_ITERATIONS` (3), `FRAME_SIZES` (the default, 32,16,8), `EVERY` (1); `KIND` and
-//! `STRENGTH` pick another single flow (vortex, 2); `SUB_PIXEL=1` sub-pixel matches.
+//! `STRENGTH` pick another single flow (vortex, 2); `SUB_PIXEL=1` sub-pixel matches; `SEED`
+//! the seed (1): the ratios move by about a tenth from seed to seed, so compare changes
+//! over several.
 
 use texsynth::core::{decode, encode_png};
 use texsynth::methods::flow::{
@@ -42,6 +44,7 @@ fn main() {
         sub_pixel: std::env::var("SUB_PIXEL").is_ok_and(|v| v == "1"),
         frame_iterations: std::env::var("FRAME_ITERATIONS")
             .map_or(3, |v| v.parse().expect("number")),
+        seed: std::env::var("SEED").map_or(1, |v| v.parse().expect("number")),
         ..FlowOptions::default()
     };
     // `EVERY=n` measures only frame 1 and every n-th frame from 30 on (quicker sweeps).
