@@ -38,7 +38,11 @@ test('feature-guided synthesis runs beside plain graph cut with both broken-feat
   await page.waitForSelector('body[data-feature-patches="1"]');
   await page.click('#step');
   await page.waitForSelector('body[data-feature-patches="2"]');
-  assert.match(await page.textContent('#fg-readout'), /patch 2\/\d+ .* context features .* warp: /);
+  // Graph-cut placement lays patches unbent: its readout says so, and the warp box is off.
+  assert.match(await page.textContent('#fg-readout'), /patch 2\/\d+ .* context features · no warp \(graph-cut placement\)/);
+  assert.equal(await page.isDisabled('#fg-warp'), true);
+  assert.match(await page.getAttribute('#fg-warp-label', 'title'), /scan placement's patches only/);
+  assert.equal(await page.isDisabled('#fg-anatomy-on'), false);
   await page.click('#run');
   await page.waitForSelector('body[data-features-done="true"]', { timeout: 120_000 });
   // getAttribute gives null for a missing attribute, and Number(null) is a finite 0.
@@ -49,5 +53,23 @@ test('feature-guided synthesis runs beside plain graph cut with both broken-feat
   const pixels = await canvasPixels(page, 'fg-map');
   assert.ok(pixels.some((v, i) => i % 4 === 3 && v === 255), 'the synthesised feature map is drawn');
   await page.screenshot({ path: `${RESULTS}/features.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});
+
+test('the warp box works with the scan placement only, the placement anatomy with graph cut only', async () => {
+  const { page, errors } = demo;
+  await page.selectOption('#fg-placement', 'scan');
+  assert.equal(await page.isDisabled('#fg-warp'), false);
+  assert.equal(await page.isDisabled('#fg-anatomy-on'), true);
+  assert.match(await page.getAttribute('#fg-anatomy-label', 'title'), /not for the scan placement/);
+  for (let n = 1; n <= 2; n++) {
+    await page.click('#step');
+    await page.waitForSelector(`body[data-feature-patches="${n}"]`);
+  }
+  // The second patch meets the first: its readout reports the correspondences and the warp.
+  assert.match(await page.textContent('#fg-readout'), /patch 2\/\d+ .* context features · \d+ correspondences · warp: \w+/);
+  await page.selectOption('#fg-placement', 'graphcut');
+  assert.equal(await page.isDisabled('#fg-warp'), true);
+  assert.equal(await page.isDisabled('#fg-anatomy-on'), false);
   assert.deepEqual(errors, []);
 });

@@ -15,6 +15,9 @@ import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
 export const id = 'features';
 export const title = 'Feature-guided';
 
+const WARP_TITLE = 'bend each patch so its features meet the placed ones (section 2.2)';
+const ANATOMY_TITLE = 'graph-cut placement: each placement\'s colour-cost surface, the probabilities it was drawn by (colour plus feature cost) and its seam graph';
+
 const OPTIONS_HTML = `
   <label title="which curves make the feature map">features <select id="fg-kind" class="view">
     <option value="ridges">ridges (thin lines)</option><option value="edges">edges</option><option value="both">both</option></select></label>
@@ -22,9 +25,9 @@ const OPTIONS_HTML = `
     <input id="fg-threshold" class="view" type="range" min="0.75" max="0.98" step="0.01" value="0.9"> <span id="fg-threshold-value">0.90</span></label>
   <label title="graph cut: whole-exemplar patches, offsets and seams guided by the features (few seams); scan: the paper's patches in scan order, warped">placement <select id="fg-placement"><option value="graphcut" selected>graph cut</option><option value="scan">scan (paper)</option></select></label>
   <label title="patch side (the paper: 32 to 64)">patch <input id="fg-patch" type="number" value="64" min="16" max="128"></label>
-  <label title="bend each patch so its features meet the placed ones (section 2.2)"><input id="fg-warp" type="checkbox" checked> warp</label>
+  <label id="fg-warp-label" title="${WARP_TITLE}"><input id="fg-warp" type="checkbox" checked> warp</label>
   <label><input id="fg-compare" type="checkbox" checked> compare with graph cut</label>
-  <label title="graph-cut placement: each placement's colour-cost surface, the probabilities it was drawn by (colour plus feature cost) and its seam graph"><input id="fg-anatomy-on" type="checkbox"> placement anatomy</label>
+  <label id="fg-anatomy-label" title="${ANATOMY_TITLE}"><input id="fg-anatomy-on" type="checkbox"> placement anatomy</label>
   <span class="views">exemplar map:
     <label><input type="radio" name="fg-brush" class="view" value="off" checked> view</label>
     <label><input type="radio" name="fg-brush" class="view" value="paint"> paint</label>
@@ -63,6 +66,20 @@ export function createPanel(ui) {
     calls: anatomyOn() ? ['placement', 'placementCosts', 'placementGraph'] : ['placement'],
   });
 
+  // Each placement has a control the other lacks: the warp bends the scan placement's patches
+  // (section 2.2), and graph-cut placement lays whole-exemplar patches unbent; the placement
+  // anatomy shows graph-cut placement's draw. A control that would do nothing is turned off
+  // and its tooltip says why (a checked warp box under graph-cut placement read "warp: none"
+  // after every patch, with no reason given).
+  function syncPlacementControls() {
+    const scan = ui.$('fg-placement').value === 'scan';
+    ui.$('fg-warp').disabled = !scan;
+    ui.$('fg-warp-label').title = scan ? WARP_TITLE
+      : `${WARP_TITLE}: the scan placement's patches only; graph-cut placement lays whole-exemplar patches unbent`;
+    ui.$('fg-anatomy-on').disabled = scan;
+    ui.$('fg-anatomy-label').title = scan ? `${ANATOMY_TITLE} (not for the scan placement)` : ANATOMY_TITLE;
+  }
+
   const detectOptions = () => ({ features: ui.$('fg-kind').value, threshold: Number(ui.$('fg-threshold').value) });
 
   function detect() {
@@ -91,6 +108,12 @@ export function createPanel(ui) {
     map.paint(x, y, mode === 'paint' ? 0.6 : 2.5, mode === 'paint');
     drawExemplarMap();
     resetSessions();
+  }
+
+  /** The readout's warp part: graph-cut placement has none to report. */
+  function warpText(event) {
+    if (ui.$('fg-placement').value !== 'scan') return 'no warp (graph-cut placement)';
+    return `${event.correspondences} correspondences · warp: ${event.warp}`;
   }
 
   function options() {
@@ -200,6 +223,11 @@ export function createPanel(ui) {
       ui.$('fg-threshold').addEventListener('input', () => {
         ui.$('fg-threshold-value').textContent = Number(ui.$('fg-threshold').value).toFixed(2);
       });
+      syncPlacementControls();
+      ui.$('fg-placement').addEventListener('change', () => {
+        syncPlacementControls();
+        ui.$('gc-anatomy').hidden = !anatomyOn();
+      });
       // The anatomy is recorded from the session's start: toggling it starts over.
       ui.$('fg-anatomy-on').addEventListener('change', () => {
         ui.$('gc-anatomy').hidden = !anatomyOn();
@@ -251,7 +279,7 @@ export function createPanel(ui) {
         const how = event.colourOnly ? 'colour only (no oriented features to match)'
           : `feature cost ${event.featureCost.toFixed(2)} · colour ${event.colourCost.toExponential(2)}`;
         ui.$('fg-readout').textContent = `patch ${event.patch + 1}/${event.patches} from (${event.sourceX}, ${event.sourceY}) · ` +
-          `${event.contextFeatures} context features · ${event.correspondences} correspondences · warp: ${event.warp} · ${how}`;
+          `${event.contextFeatures} context features · ${warpText(event)} · ${how}`;
         document.body.dataset.featurePatches = String(event.patch + 1);
         if (anatomyOn()) showPlacementAnatomy(ui.$, synthesis.result('placementCosts'), synthesis.result('placementGraph'));
         if (event.featuresDone) {
