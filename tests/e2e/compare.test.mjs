@@ -21,6 +21,7 @@ const figures = (page) =>
       time: item.querySelector('.compare-time').textContent,
       quality: item.querySelector('.quality').textContent,
       coherence: Number(item.querySelector('.quality').dataset.coherence),
+      flat: Number(item.querySelector('.quality').dataset.flat),
       distinct: new Set(data).size,
       size: [canvas.width, canvas.height],
     };
@@ -56,9 +57,15 @@ test('three methods side by side, each with metrics and time', async () => {
     cells: [...r.querySelectorAll('td')].map((td) => ({ text: td.textContent, best: td.classList.contains('best') })),
   })));
   assert.deepEqual(table.map((r) => r.name), ['Texture optimization', 'Graph cut', 'Feature-guided']);
-  for (let c = 0; c < 4; c++) assert.ok(table.some((r) => r.cells[c].best), `column ${c} has a best`);
+  for (let c = 0; c < 5; c++) assert.ok(table.some((r) => r.cells[c].best), `column ${c} has a best`);
   assert.match(table[0].cells[0].text, /^\d\.\de-\d$/);
-  assert.match(table[0].cells[3].text, /^\d+\.\d\d s$/);
+  // The detail metric (issue 10): each method's flat fraction as on its card, the one nearest
+  // the exemplar's own 10% in bold.
+  const flats = shown.map((f) => f.flat);
+  table.forEach((r, i) => assert.equal(r.cells[3].text, `${(flats[i] * 100).toFixed(1)}%`, r.name));
+  const nearest = Math.min(...flats.map((f) => Math.abs(f - 0.1)));
+  table.forEach((r, i) => assert.equal(r.cells[3].best, Math.abs(flats[i] - 0.1) === nearest, r.name));
+  assert.match(table[0].cells[4].text, /^\d+\.\d\d s$/);
   // The canvases line up (the captions wrap differently).
   const tops = await page.$$eval('.compare-item canvas', (cs) => cs.map((c) => Math.round(c.getBoundingClientRect().top)));
   assert.equal(new Set(tops).size, 1, `canvas tops ${tops}`);

@@ -38,15 +38,17 @@ const OPTIONS_HTML = `
 const SIDE_HTML = `
   <div class="readout" id="cmp-readout">pick two or more and press Run</div>
   <table class="compare-table" id="cmp-table" hidden>
-    <caption>Side by side (lower is better; best in bold)</caption>
+    <caption>Side by side (lower is better, flat nearest the exemplar's 10%; best in bold)</caption>
     <thead><tr><th scope="col">method</th><th scope="col"><abbr title="coherence">coher.</abbr></th>
       <th scope="col"><abbr title="completeness">compl.</abbr></th><th scope="col"><abbr title="histogram">hist.</abbr></th>
+      <th scope="col"><abbr title="flat fraction: the share of pixels flatter than the exemplar's flattest tenth (the exemplar itself: about 10%; far above it, the output has washed out)">flat</abbr></th>
       <th scope="col">time</th></tr></thead>
     <tbody></tbody>
   </table>
   <p class="legend">Each method runs on the same exemplar, seed and output size, with its defaults. The methods
   take turns: one step of each in the page's worker. Time is the wall time of that method's own steps (making the
-  session included), so it does not count the others' turns. Quality: lower is better for every figure.</p>`;
+  session included), so it does not count the others' turns. Quality: lower is better for every figure but flat,
+  which is best near the exemplar's own 10% (far above it, the output has washed out).</p>`;
 
 export function createPanel(ui) {
   let runs = [];
@@ -89,8 +91,12 @@ export function createPanel(ui) {
   function table() {
     const done = runs.filter((r) => r.done && !r.error && r.figures);
     ui.$('cmp-table').hidden = done.length === 0;
-    const columns = ['coherence', 'completeness', 'histogram', 'time'];
-    const best = Object.fromEntries(columns.map((c) => [c, Math.min(...done.map((r) => r.figures[c]))]));
+    const columns = ['coherence', 'completeness', 'histogram', 'flat', 'time'];
+    // The flat fraction is best nearest the exemplar's own (about 10% by its definition): below
+    // it an output is busier than the exemplar, above it washed out. Every other figure: lowest.
+    const FLAT_EXEMPLAR = 0.1;
+    const badness = (c, v) => (c === 'flat' ? Math.abs(v - FLAT_EXEMPLAR) : v);
+    const best = Object.fromEntries(columns.map((c) => [c, Math.min(...done.map((r) => badness(c, r.figures[c])))]));
     ui.$('cmp-table').tBodies[0].replaceChildren(...done.map((run) => {
       const row = document.createElement('tr');
       const name = document.createElement('th');
@@ -99,8 +105,9 @@ export function createPanel(ui) {
       row.append(name, ...columns.map((c) => {
         const cell = document.createElement('td');
         const value = run.figures[c];
-        cell.textContent = c === 'time' ? `${(value / 1000).toFixed(2)} s` : value.toExponential(1);
-        if (done.length > 1 && value === best[c]) cell.className = 'best';
+        cell.textContent = c === 'time' ? `${(value / 1000).toFixed(2)} s`
+          : c === 'flat' ? `${(value * 100).toFixed(1)}%` : value.toExponential(1);
+        if (done.length > 1 && badness(c, value) === best[c]) cell.className = 'best';
         return cell;
       }));
       return row;
@@ -179,7 +186,9 @@ export function createPanel(ui) {
         run.quality = showQuality(element, ui.exemplar(), run.session).then(() => {
           if (mine !== generation) return;
           const figure = (name) => Number(element.dataset[name]);
-          run.figures = { coherence: figure('coherence'), completeness: figure('completeness'), histogram: figure('histogram'), time: run.time };
+          run.figures = {
+            coherence: figure('coherence'), completeness: figure('completeness'), histogram: figure('histogram'), flat: figure('flat'), time: run.time,
+          };
           table();
         });
       }
