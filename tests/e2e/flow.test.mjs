@@ -28,6 +28,16 @@ test('the flow panel animates, compares with the naive warp and records a WebM',
   assert.equal(naive.length, 96 * 96 * 4);
   assert.notDeepEqual(frame, naive, 'the naive warp differs from the synthesis');
   assert.ok(new Set(await canvasPixels(page, 'fl-playback')).size > 50, 'finished frames play');
+  // Frame 1 and the last frame are scored, and the last against frame 1 (the detail metric).
+  await page.waitForSelector('#fl-quality-drift[data-flat]', { timeout: 30_000 });
+  const scores = await page.$$eval('p.quality[id^="fl-quality"]', (ps) => ps.map((p) => ({ id: p.id, text: p.textContent, ...p.dataset })));
+  const [first, last, drift] = scores;
+  assert.match(first.text, /^frame 1: quality .* flat \d+\.\d%/);
+  assert.match(last.text, /^frame 10: quality .* flat \d+\.\d%/);
+  assert.match(drift.text, /^frame 10 against frame 1: flat ×\d+\.\d\d · coherence ×\d+\.\d\d/);
+  assert.ok(Math.abs(Number(drift.flat) - Number(last.flat) / Number(first.flat)) < 1e-9, 'the flat ratio is the two frames\'');
+  assert.ok(Math.abs(Number(drift.coherence) - Number(last.coherence) / Number(first.coherence)) < 1e-9);
+  assert.notEqual(first.coherence, last.coherence, 'two frames were scored, not one twice');
 
   await page.click('#fl-record');
   await page.waitForSelector('body[data-recorded-bytes]', { timeout: 60_000 });

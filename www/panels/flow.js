@@ -9,6 +9,7 @@
 import { flowField } from '../pkg/texsynth.js';
 import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
+import { showQuality } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
 import { recordToLink } from '../lib/record.js';
@@ -70,6 +71,9 @@ const SIDE_HTML = `
     <figure><canvas id="fl-naive" width="128" height="128" aria-label="Naive warp"></canvas>
       <figcaption>naive warp (no synthesis)</figcaption></figure>
   </div>
+  <p class="quality" id="fl-quality-first"></p>
+  <p class="quality" id="fl-quality-last"></p>
+  <p class="quality" id="fl-quality-drift"></p>
   <figure><canvas id="fl-arrows" width="140" height="140" aria-label="Flow field"></canvas>
     <figcaption id="fl-arrows-caption">the flow</figcaption></figure>
   <canvas id="fl-texture" class="plot" width="296" height="110" aria-label="Texture energy per frame"></canvas>
@@ -81,6 +85,9 @@ export function createPanel(ui) {
   let session = null;
   let pending = null;
   let frames = [];
+  // Frame 1 and the last frame are scored in the worker (once each: 0.1-0.7 s a frame at 96 to
+  // 256 pixels); `scored` counts resets, so figures that arrive after one are dropped.
+  let scored = 0;
   let playTimer = null;
   let playIndex = 0;
   let recording = false;
@@ -227,6 +234,31 @@ export function createPanel(ui) {
     });
   }
 
+  /**
+   * Scores finished frame `index` (frame 1, or the last) with the method-independent metrics,
+   * and once both are in, the last frame against frame 1: does the animation keep the detail
+   * of its first frame (a frame only warped loses it, see the naive warp)?
+   */
+  function scoreFrame(index) {
+    const first = index === 0;
+    const element = ui.$(first ? 'fl-quality-first' : 'fl-quality-last');
+    const mine = scored;
+    showQuality(element, ui.exemplar(), session).then(() => {
+      if (mine !== scored) return;
+      element.textContent = `frame ${index + 1}: ${element.textContent}`;
+      element.dataset.frame = String(index + 1);
+      const a = ui.$('fl-quality-first').dataset;
+      const b = ui.$('fl-quality-last').dataset;
+      if (!a.flat || !b.flat) return;
+      const drift = ui.$('fl-quality-drift');
+      const ratio = (name) => Number(b[name]) / Number(a[name]);
+      drift.textContent = `frame ${b.frame} against frame 1: flat ×${ratio('flat').toFixed(2)} · ` +
+        `coherence ×${ratio('coherence').toFixed(2)} (above 1: detail lost along the way)`;
+      drift.dataset.flat = String(ratio('flat'));
+      drift.dataset.coherence = String(ratio('coherence'));
+    }, () => {});
+  }
+
   /** Loops the finished frames on the playback canvas. */
   function startPlayback() {
     if (playTimer) return;
@@ -298,6 +330,7 @@ export function createPanel(ui) {
         plot();
         if (event.frame > 0) drawArrows(event.frame - 1);
         document.body.dataset.flowFrames = String(event.frame + 1);
+        if (event.frame === 0 || event.done) scoreFrame(event.frame);
       }
       // Large frames split an iteration over several steps (kind 'part'): say how far it is.
       const part = event.kind === 'part' ? ` (${event.phase}, ${Math.round(100 * event.progress)}%)` : '';
@@ -327,6 +360,12 @@ export function createPanel(ui) {
       for (const id of ['fl-warped', 'fl-e-step', 'fl-m-step']) {
         const c = ui.$(id);
         c.getContext('2d').clearRect(0, 0, c.width, c.height);
+      }
+      scored += 1;
+      for (const id of ['fl-quality-first', 'fl-quality-last', 'fl-quality-drift']) {
+        const element = ui.$(id);
+        element.textContent = '';
+        for (const key of Object.keys(element.dataset)) delete element.dataset[key];
       }
       delete document.body.dataset.flowDone;
       delete document.body.dataset.flowHalf;
