@@ -256,7 +256,10 @@ export function createPanel(ui) {
         `coherence ×${ratio('coherence').toFixed(2)} (above 1: detail lost along the way)`;
       drift.dataset.flat = String(ratio('flat'));
       drift.dataset.coherence = String(ratio('coherence'));
-    }, () => {});
+    }, (error) => {
+      // A reset frees the session under a pending score: that failure is expected, and dropped.
+      if (mine === scored) element.textContent = `frame ${index + 1}: not scored (${error?.message ?? error})`;
+    });
   }
 
   /** Loops the finished frames on the playback canvas. */
