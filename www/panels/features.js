@@ -69,7 +69,7 @@ export function createPanel(ui) {
   // Each placement has a control the other lacks: the warp bends the scan placement's patches
   // (section 2.2), and graph-cut placement lays whole-exemplar patches unbent; the placement
   // anatomy shows graph-cut placement's draw. A control that would do nothing is turned off
-  // and its tooltip says why (a checked warp box under graph-cut placement read "warp: none"
+  // and its tooltip says why (a checked warp box under graph-cut placement read "warp: None"
   // after every patch, with no reason given).
   function syncPlacementControls() {
     const scan = ui.$('fg-placement').value === 'scan';
