@@ -355,6 +355,29 @@ mod tests {
         best
     }
 
+    /// Every query patch of `out` (`ow` x `oh`) against the brute-force nearest distance in the
+    /// indexed exemplar, within 1e-4 relative; `more(qx, qy, distance)` checks further.
+    fn assert_every_query_exact(
+        index: &PatchIndex<'_>,
+        (ex, ew, eh): (&[f32], usize, usize),
+        out: &[f32],
+        (ow, oh): (usize, usize),
+        size: usize,
+        mut more: impl FnMut(usize, usize, f32),
+    ) {
+        for qy in 0..=oh - size {
+            for qx in 0..=ow - size {
+                let expected = brute(ex, ew, eh, out, ow, qx, qy, size);
+                let fast = index.nearest(out, ow, qx, qy);
+                assert!(
+                    (fast - expected).abs() <= 1e-4 * expected.max(1e-3),
+                    "({qx}, {qy}): {fast} vs {expected}"
+                );
+                more(qx, qy, fast);
+            }
+        }
+    }
+
     #[test]
     fn repeated_and_flat_patches_are_indexed_once_and_searches_stay_exact() {
         // A 6x6 tile repeated, with a flat band across it: many identical patches.
@@ -383,16 +406,7 @@ mod tests {
         let out: Vec<f32> = (0..ow * oh * 3)
             .map(|_| rng.next_f32() * 0.6 + 0.2)
             .collect();
-        for qy in 0..=oh - size {
-            for qx in 0..=ow - size {
-                let expected = brute(&ex, ew, eh, &out, ow, qx, qy, size);
-                let fast = index.nearest(&out, ow, qx, qy);
-                assert!(
-                    (fast - expected).abs() <= 1e-4 * expected.max(1e-3),
-                    "({qx}, {qy}): {fast} vs {expected}"
-                );
-            }
-        }
+        assert_every_query_exact(&index, (&ex, ew, eh), &out, (ow, oh), size, |_, _, _| {});
         // A query that is one of the repeated patches finds it at distance 0.
         assert_eq!(index.nearest(&ex, ew, 7, 1), 0.0);
         assert_eq!(index.nearest(&ex, ew, 20, 11), 0.0);
@@ -411,21 +425,20 @@ mod tests {
             .map(|_| rng.next_f32() * 0.8 + 0.1)
             .collect();
         let index = PatchIndex::new(&ex, ew, eh, size);
-        for qy in 0..=oh - size {
-            for qx in 0..=ow - size {
-                let brute = brute(&ex, ew, eh, &out, ow, qx, qy, size);
-                let fast = index.nearest(&out, ow, qx, qy);
-                assert!(
-                    (fast - brute).abs() <= 1e-4 * brute.max(1e-3),
-                    "({qx}, {qy}): {fast} vs {brute}"
-                );
+        assert_every_query_exact(
+            &index,
+            (&ex, ew, eh),
+            &out,
+            (ow, oh),
+            size,
+            |qx, qy, fast| {
                 // Hints (in range, out of range, the answer itself) change nothing but the
                 // search's start.
                 let hints = [(rng.index(ew), rng.index(eh)), (ew, 0), (qx, qy)];
                 let (hinted, at) = index.nearest_from(&out, ow, qx, qy, &hints);
                 assert_eq!(hinted, fast, "({qx}, {qy}) with hints {hints:?}");
                 assert_eq!(index.ssd(&out, ow, qx, qy, at.0, at.1, f32::INFINITY), fast);
-            }
-        }
+            },
+        );
     }
 }
