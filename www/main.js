@@ -75,6 +75,22 @@ function resetPanel() {
   setStatus(state.exemplar ? 'ready' : 'pick an exemplar');
 }
 
+/** Greys the toolbar's output size and seed where the panel decides them itself, with the
+ * panel's reason as their tooltip (a field that stays live and does nothing misleads). */
+function syncToolbar(panel) {
+  const owned = [
+    [['out-width', 'out-height'], panel.ownsOutputSize],
+    [['seed'], panel.ownsSeed],
+  ];
+  for (const [ids, reason] of owned) {
+    for (const id of ids) {
+      $(id).disabled = Boolean(reason);
+      if (reason) $(id).title = reason;
+      else $(id).removeAttribute('title');
+    }
+  }
+}
+
 function selectPanel(module) {
   resetPanel();
   state.panel?.unmount?.();
@@ -89,6 +105,7 @@ function selectPanel(module) {
   }
   $('method-options').setAttribute('aria-labelledby', `tab-${module.id}`);
   syncTabs();
+  syncToolbar(state.panel);
   state.panel.mount();
   for (const input of $('method-options').querySelectorAll('input, select')) {
     if (!input.classList.contains('view')) input.addEventListener('change', resetPanel);

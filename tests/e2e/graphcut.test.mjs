@@ -120,5 +120,17 @@ test('a merge with painted constraints completes and shows its seam', async () =
   assert.match(await page.textContent('#mg-readout'), /merged · cut cost/);
   assert.ok(redPixels(await canvasPixels(page)) > 20, 'the seam is drawn');
   await page.screenshot({ path: `${RESULTS}/merge.png`, fullPage: true });
+  // The merge's canvas is the two images side by side and it draws nothing at random: the
+  // toolbar's size and seed are greyed with the reason, and live again on the next panel.
+  for (const id of ['out-width', 'out-height', 'seed']) {
+    assert.equal(await page.isDisabled(`#${id}`), true, `#${id} disabled under merge`);
+  }
+  assert.match(await page.getAttribute('#out-width', 'title'), /side by side/);
+  assert.match(await page.getAttribute('#seed', 'title'), /nothing at random/);
+  await page.click('button[data-panel="graphcut"]');
+  for (const id of ['out-width', 'out-height', 'seed']) {
+    assert.equal(await page.isDisabled(`#${id}`), false, `#${id} live again under graph cut`);
+    assert.equal(await page.getAttribute(`#${id}`, 'title'), null);
+  }
   assert.deepEqual(errors, []);
 });

@@ -14,6 +14,12 @@ after(async () => demo?.close());
 test('the demo clip loops, with its x-t slice, loop point, playback and WebM', async () => {
   const { page, errors } = demo;
   await page.click('button[data-panel="video"]');
+  // The video's size comes from its own field: the toolbar's output size is greyed, saying so;
+  // the seed stays live (random placement and offsets draw from it).
+  assert.equal(await page.isDisabled('#out-width'), true);
+  assert.equal(await page.isDisabled('#out-height'), true);
+  assert.match(await page.getAttribute('#out-height', 'title'), /own size field/);
+  assert.equal(await page.isDisabled('#seed'), false);
   await page.fill('#vt-size', '48');
   await page.dispatchEvent('#vt-size', 'change');
   await page.fill('#vt-frames', '36');

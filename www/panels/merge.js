@@ -137,6 +137,8 @@ export function createPanel(ui) {
     get optionsHtml() {
       return optionsHtml();
     },
+    ownsOutputSize: 'the merge is as large as the two images side by side',
+    ownsSeed: 'the merge places each image where it is and draws nothing at random',
     sideHtml: `<div class="readout" id="mg-readout">paint on the image, then Run or Step</div>
       <div class="explain" id="mg-explain" data-history-text aria-live="polite"></div>
       <p class="legend">Blue paint: must come from the first image (the exemplar). Orange: from the second.

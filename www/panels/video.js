@@ -289,6 +289,7 @@ export function createPanel(ui) {
     title,
     optionsHtml: OPTIONS_HTML,
     sideHtml: SIDE_HTML,
+    ownsOutputSize: "the video's frames take this panel's own size field (a spatial extension is twice it)",
     mount() {
       ui.$('vt-record').addEventListener('click', record);
       ui.$('vt-anatomy-on').addEventListener('change', toggleAnatomy);
