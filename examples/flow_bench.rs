@@ -29,6 +29,7 @@ fn main() {
         frames,
         ..FlowOptions::default()
     };
+    let verbose = std::env::var_os("FLOW_VERBOSE").is_some();
     let start = Instant::now();
     let mut session = FlowSession::new(&exemplar, flow, options).expect("session");
     let mut first = None;
@@ -41,7 +42,7 @@ fn main() {
             e.0 += t.elapsed().as_secs_f64() * 1e3;
             if matches!(event.kind, FlowEventKind::Iteration | FlowEventKind::Frame) {
                 e.1 += 1;
-                if std::env::var_os("FLOW_VERBOSE").is_some() {
+                if verbose {
                     println!(
                         "  frame {} w {} iteration {}: {} changed, texture {:.6}, flow {:.6}",
                         event.frame,
@@ -62,7 +63,7 @@ fn main() {
         }
     }
     let total = start.elapsed().as_secs_f64();
-    if std::env::var_os("FLOW_VERBOSE").is_some() {
+    if verbose {
         for (size, (ms, n)) in &per_size {
             println!("  w {size}: {ms:.0} ms over {n} iterations");
         }

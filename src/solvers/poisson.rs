@@ -154,7 +154,9 @@ mod tests {
     use super::*;
     use crate::core::Rng;
 
-    /// Dense Gaussian elimination: the oracle for small systems.
+    /// Dense Gaussian elimination: the oracle for small systems (indexed loops: they read as
+    /// the textbook's).
+    #[allow(clippy::needless_range_loop)]
     fn dense_solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Vec<f64> {
         let n = b.len();
         for col in 0..n {
@@ -192,6 +194,7 @@ mod tests {
     }
 
     #[test]
+    #[allow(clippy::needless_range_loop)]
     fn cg_matches_dense_elimination_with_and_without_wrap() {
         for wrap in [false, true] {
             let (w, h, d, hw, vw) = random_system(wrap, 7);

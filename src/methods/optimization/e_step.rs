@@ -490,8 +490,8 @@ mod tests {
                         den += g;
                     }
                 }
-                for k in 0..2 {
-                    assert!((f64::from(out.pixel(x, y)[k]) - num[k] / den).abs() < 1e-5);
+                for (got, want) in out.pixel(x, y).iter().zip(num) {
+                    assert!((f64::from(*got) - want / den).abs() < 1e-5);
                 }
             }
         }
