@@ -9,6 +9,9 @@ use texsynth::core::{Image, decode, to_rgba8};
 use texsynth::methods::design::Deformation;
 use texsynth::methods::design::layers::{Layer, LayerDesign, LayerOptions};
 use texsynth::methods::features::{FeatureOptions, FeatureSynthesis};
+use texsynth::methods::flow::{
+    Component, FlowKind, FlowOptions, FlowSession, FlowSource, FlowSpec,
+};
 use texsynth::methods::graphcut;
 use texsynth::methods::optimization;
 
@@ -97,6 +100,25 @@ fn layers(name: &str) -> u32 {
     fnv1a(&to_rgba8(s.image()))
 }
 
+/// Three frames of flow animation (a vortex of strength 2, the default flow): the frames
+/// after the first run the M-step under the soft constraint of the warped previous frame.
+fn flow(name: &str) -> u32 {
+    let options = FlowOptions {
+        output_width: 48,
+        output_height: 48,
+        frames: 3,
+        seed: 3,
+        ..FlowOptions::default()
+    };
+    let vortex = FlowSpec::new(vec![Component::new(FlowKind::Vortex, 2.0)]).expect("flow");
+    let mut s =
+        FlowSession::new(&sample(name), FlowSource::Generator(vortex), options).expect("session");
+    while !s.is_done() {
+        s.step().expect("step");
+    }
+    fnv1a(&to_rgba8(&s.frame_image().expect("frame")))
+}
+
 fn main() {
     use optimization::Energy::{Haar, Pixels};
     if std::env::args().any(|a| a == "--large") {
@@ -136,4 +158,5 @@ fn main() {
     }
     println!("features/paving_64 {:08x}", features("paving_64"));
     println!("layers/brick_64 {:08x}", layers("brick_64"));
+    println!("flow/gravel_64 {:08x}", flow("gravel_64"));
 }

@@ -10,6 +10,7 @@ export const CASES = [
   { name: 'optimization-haar/sand_64', kind: 'TextureOptimization', sample: 'sand_64', options: { ...small, energy: 'haar' } },
   ...['gravel_64', 'tiles_64'].map((s) => ({ name: `graphcut/${s}`, kind: 'GraphcutTextures', sample: s, options: { outputWidth: 96, outputHeight: 96, seed: 3, refinementPatches: 4 } })),
   { name: 'features/paving_64', kind: 'FeatureSynthesis', sample: 'paving_64', options: { outputWidth: 96, outputHeight: 96, patchSize: 32, seed: 3 } },
+  { name: 'flow/gravel_64', kind: 'FlowAnimation', sample: 'gravel_64', options: { outputWidth: 48, outputHeight: 48, frames: 3, seed: 3 } },
   { name: 'layers/brick_64', kind: 'LayerDesign', sample: 'brick_64', options: { outputWidth: 96, outputHeight: 96, patchSize: 16, seed: 3 }, deformations: [{ rotate: 30 }] },
 ];
 
