@@ -4,24 +4,30 @@
 //! offers the pointers for wasm32, so it is written here and checked against brute force.
 
 /// The squared distance to the nearest seed of every pixel and that seed's index (`y * w + x`),
-/// `usize::MAX` where there is no seed at all.
+/// [`DistanceMap::NONE`] where there is no seed at all. Pointers are `u32` (grids up to 4
+/// billion pixels): a 12-megapixel photo's four feature buckets hold 48 million of them.
 pub struct DistanceMap {
     pub width: usize,
     pub height: usize,
     pub squared: Vec<f32>,
-    pub nearest: Vec<usize>,
+    pub nearest: Vec<u32>,
 }
 
 impl DistanceMap {
-    /// The transform of the `width` x `height` grid whose seeds are `true`.
+    /// The pointer of a pixel with no seed anywhere.
+    pub const NONE: u32 = u32::MAX;
+
+    /// The transform of the `width` x `height` grid whose seeds are `true` (fewer than
+    /// `u32::MAX` pixels).
     #[must_use]
     pub fn new(width: usize, height: usize, seeds: &[bool]) -> DistanceMap {
         let n = width * height;
         debug_assert_eq!(seeds.len(), n);
+        debug_assert!(n < u32::MAX as usize);
         let far = f32::INFINITY;
         // Columns first: for every pixel, the nearest seed in its column.
         let mut col_d = vec![far; n];
-        let mut col_y = vec![usize::MAX; n];
+        let mut col_y = vec![Self::NONE; n];
         let mut f = vec![0.0f32; width.max(height)];
         let mut d = vec![0.0f32; width.max(height)];
         let mut arg = vec![0usize; width.max(height)];
@@ -33,12 +39,16 @@ impl DistanceMap {
             scratch.transform(&f[..height], &mut d[..height], &mut arg[..height]);
             for y in 0..height {
                 col_d[y * width + x] = d[y];
-                col_y[y * width + x] = if d[y].is_finite() { arg[y] } else { usize::MAX };
+                col_y[y * width + x] = if d[y].is_finite() {
+                    arg[y] as u32
+                } else {
+                    Self::NONE
+                };
             }
         }
         // Then rows, over the column distances.
         let mut squared = vec![far; n];
-        let mut nearest = vec![usize::MAX; n];
+        let mut nearest = vec![Self::NONE; n];
         for y in 0..height {
             f[..width].copy_from_slice(&col_d[y * width..(y + 1) * width]);
             scratch.transform(&f[..width], &mut d[..width], &mut arg[..width]);
@@ -47,7 +57,7 @@ impl DistanceMap {
                 squared[i] = d[x];
                 if d[x].is_finite() {
                     let sx = arg[x];
-                    nearest[i] = col_y[y * width + sx] * width + sx;
+                    nearest[i] = col_y[y * width + sx] * width as u32 + sx as u32;
                 }
             }
         }
@@ -145,10 +155,11 @@ mod tests {
                 let best = points.iter().map(|&j| d2(j)).fold(f32::INFINITY, f32::min);
                 assert_eq!(map.squared[i], best, "seed {seed} pixel {i}");
                 if points.is_empty() {
-                    assert_eq!(map.nearest[i], usize::MAX);
+                    assert_eq!(map.nearest[i], DistanceMap::NONE);
                 } else {
-                    assert!(seeds[map.nearest[i]], "points at a seed");
-                    assert_eq!(d2(map.nearest[i]), best, "seed {seed} pixel {i}: pointer");
+                    let j = map.nearest[i] as usize;
+                    assert!(seeds[j], "points at a seed");
+                    assert_eq!(d2(j), best, "seed {seed} pixel {i}: pointer");
                 }
             }
         }

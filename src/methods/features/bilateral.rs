@@ -3,7 +3,7 @@
 //! sigma_d = 2 pixels, similarity sigma_r = 10/256 of the grey range.
 
 /// Filters a `width` x `height` grey image (values in 0..1). The window reaches 2 sigma_d; the
-/// spatial weights are tabulated once, the range weights computed per pair.
+/// spatial weights are tabulated once, and so is the range weight's exponential ([`NegExp`]).
 #[must_use]
 pub fn bilateral(
     grey: &[f32],
@@ -22,35 +22,65 @@ pub fn bilateral(
                 crate::core::math::expf(-d2 / (2.0 * sigma_d * sigma_d));
         }
     }
-    let range_scale = -1.0 / (2.0 * sigma_r * sigma_r);
+    let range_scale = 1.0 / (2.0 * sigma_r * sigma_r);
+    let neg_exp = NegExp::new();
     let mut out = vec![0.0f32; grey.len()];
-    for y in 0..height as isize {
-        for x in 0..width as isize {
-            let centre = grey[(y as usize) * width + x as usize];
+    let r = radius as usize;
+    for y in 0..height {
+        // The window clipped to the image once per pixel, then walked as zipped row slices (the
+        // same pairs in the same order as a bounds check per pair, without the checks).
+        let (y0, y1) = (y.saturating_sub(r), (y + r).min(height - 1));
+        for x in 0..width {
+            let centre = grey[y * width + x];
+            let (x0, x1) = (x.saturating_sub(r), (x + r).min(width - 1));
             let (mut sum, mut norm) = (0.0f32, 0.0f32);
-            for dy in -radius..=radius {
-                let yy = y + dy;
-                if yy < 0 || yy >= height as isize {
-                    continue;
-                }
-                let row = &spatial[((dy + radius) as usize) * side..];
-                for dx in -radius..=radius {
-                    let xx = x + dx;
-                    if xx < 0 || xx >= width as isize {
-                        continue;
-                    }
-                    let v = grey[(yy as usize) * width + xx as usize];
+            for yy in y0..=y1 {
+                let weights = &spatial[(yy + r - y) * side + (x0 + r - x)..];
+                let values = &grey[yy * width + x0..=yy * width + x1];
+                for (&v, &g) in values.iter().zip(weights) {
                     let d = v - centre;
-                    let w =
-                        row[(dx + radius) as usize] * crate::core::math::expf(d * d * range_scale);
+                    let w = g * neg_exp.at(d * d * range_scale);
                     sum += w * v;
                     norm += w;
                 }
             }
-            out[(y as usize) * width + x as usize] = sum / norm;
+            out[y * width + x] = sum / norm;
         }
     }
     out
+}
+
+/// `exp(-t)` for `t >= 0`, tabulated and read linearly between entries (at most 1e-6 off);
+/// 0 past [`NegExp::CUTOFF`], where it is below 3e-9. The range weight of every pair in the
+/// window was a library call: over a 12-megapixel photo that was a quarter of the feature-guided
+/// session's set-up (15 s of 53 natively).
+struct NegExp {
+    table: Vec<f32>,
+}
+
+impl NegExp {
+    const CUTOFF: f32 = 20.0;
+    const STEPS: usize = 8192;
+
+    fn new() -> Self {
+        let step = Self::CUTOFF / Self::STEPS as f32;
+        let table = (0..=Self::STEPS + 1)
+            .map(|i| crate::core::math::expf(-(i as f32) * step))
+            .collect();
+        NegExp { table }
+    }
+
+    #[inline]
+    fn at(&self, t: f32) -> f32 {
+        let u = t * (Self::STEPS as f32 / Self::CUTOFF);
+        // Past the cutoff, and for a NaN (no pair of finite values gives one), nothing.
+        if u.is_nan() || u >= Self::STEPS as f32 {
+            return 0.0;
+        }
+        let i = u as usize;
+        let (a, b) = (self.table[i], self.table[i + 1]);
+        a + (u - i as f32) * (b - a)
+    }
 }
 
 #[cfg(test)]
@@ -82,6 +112,22 @@ mod tests {
                 s / n
             })
             .collect()
+    }
+
+    #[test]
+    fn the_tabulated_exponential_is_within_a_millionth_and_zero_past_its_cutoff() {
+        let e = NegExp::new();
+        let mut worst = 0.0f64;
+        for k in 0..200_000 {
+            let t = k as f32 * 1e-4;
+            let err = (f64::from(e.at(t)) - (-f64::from(t)).exp()).abs();
+            worst = worst.max(err);
+        }
+        assert!(worst < 1e-6, "worst error {worst}");
+        for t in [20.0f32, 21.0, 1e9, f32::INFINITY] {
+            assert_eq!(e.at(t), 0.0, "exp(-{t})");
+        }
+        assert_eq!(e.at(0.0), 1.0);
     }
 
     #[test]

@@ -176,11 +176,13 @@ fn responses(image: &Image, kind: FeatureKind) -> (Vec<f32>, Vec<f32>) {
 pub fn detect(image: &Image, options: DetectOptions) -> Result<FeatureMap> {
     options.validate()?;
     let (response, angle) = responses(image, options.kind);
-    let mut sorted = response.clone();
-    sorted.sort_by(f32::total_cmp);
-    let index = ((sorted.len() - 1) as f32 * options.percentile).round() as usize;
+    // The response at the percentile's rank: a selection, not a sort (the same value; sorting
+    // 12 million responses of a photo took 6 s natively).
+    let mut ranked = response.clone();
+    let index = ((ranked.len() - 1) as f32 * options.percentile).round() as usize;
+    let (_, at_rank, _) = ranked.select_nth_unstable_by(index, f32::total_cmp);
     // Never below a floor: a flat image has no features, not noise promoted to features.
-    let threshold = sorted[index].max(1e-3);
+    let threshold = at_rank.max(1e-3);
     Ok(classify(
         image.width(),
         image.height(),

@@ -48,7 +48,10 @@ pub struct FeatureIndex {
     width: usize,
     height: usize,
     angle: Vec<f32>,
-    maps: Vec<DistanceMap>,
+    /// Per orientation bucket, the nearest feature pixel of that bucket to every pixel
+    /// ([`DistanceMap::NONE`] for none); the distance itself is recomputed from the two
+    /// positions, which is what the transform's squared distance is, so it is not kept.
+    nearest: Vec<Vec<u32>>,
     /// Summed-area table of the feature mask, (w + 1) x (h + 1).
     sat: Vec<u32>,
     features: usize,
@@ -67,16 +70,29 @@ pub struct Correspondence {
     pub gdist: f32,
 }
 
+/// Bytes per pixel of an index (for the memory estimate): per orientation bucket the nearest
+/// pixels (`u32`), the tangents (`f32`), the mask's summed-area table (`u32`) and the match
+/// counts (`u16`); and, while one bucket's transform is being built, its seeds (`bool`) and its
+/// four `f32`/`u32` buffers.
+pub const INDEX_BYTES_PER_PIXEL: u64 = (BUCKETS * 4 + 4 + 4 + 2 + (1 + 4 * 4)) as u64;
+
 impl FeatureIndex {
+    /// The bytes the index holds (its buffers' lengths), for checking the estimate.
+    #[must_use]
+    pub fn held_bytes(&self) -> u64 {
+        let maps: usize = self.nearest.iter().map(|m| m.len() * 4).sum();
+        (maps + self.angle.len() * 4 + self.sat.len() * 4 + self.counts.len() * 2) as u64
+    }
+
     #[must_use]
     pub fn new(map: &FeatureMap) -> FeatureIndex {
         let (w, h) = (map.width, map.height);
-        let maps = (0..BUCKETS)
+        let nearest = (0..BUCKETS)
             .map(|b| {
                 let seeds: Vec<bool> = (0..w * h)
                     .map(|i| map.mask[i] && bucket(map.angle[i]) == b)
                     .collect();
-                DistanceMap::new(w, h, &seeds)
+                DistanceMap::new(w, h, &seeds).nearest
             })
             .collect();
         let mut sat = vec![0u32; (w + 1) * (h + 1)];
@@ -91,7 +107,7 @@ impl FeatureIndex {
             width: w,
             height: h,
             angle: map.angle.clone(),
-            maps,
+            nearest,
             sat,
             features: map.count(),
             counts: vec![0; w * h],
@@ -120,12 +136,16 @@ impl FeatureIndex {
         let l = bucket(angle);
         let mut best: Option<(usize, f32)> = None;
         for k in [(l + BUCKETS - 1) % BUCKETS, l, (l + 1) % BUCKETS] {
-            let map = &self.maps[k];
-            let j = map.nearest[p];
-            if j == usize::MAX {
+            let j = self.nearest[k][p];
+            if j == DistanceMap::NONE {
                 continue;
             }
-            let g = map.squared[p].sqrt() + tau * tangent_difference(angle, self.angle[j]);
+            let j = j as usize;
+            let (dx, dy) = (
+                (j % self.width) as f32 - x as f32,
+                (j / self.width) as f32 - y as f32,
+            );
+            let g = (dx * dx + dy * dy).sqrt() + tau * tangent_difference(angle, self.angle[j]);
             if best.is_none_or(|(_, b)| g < b) {
                 best = Some((j, g));
             }
@@ -287,6 +307,25 @@ mod tests {
             m.angle[y * w + x] = a;
         }
         m
+    }
+
+    #[test]
+    fn the_bytes_per_pixel_estimate_covers_what_an_index_holds() {
+        for (w, h) in [(50, 40), (128, 96), (7, 300)] {
+            let index = FeatureIndex::new(&map(w, h, &grid(w, h)));
+            let estimate = INDEX_BYTES_PER_PIXEL * (w * h) as u64;
+            let held = index.held_bytes();
+            // The estimate also counts one bucket's construction scratch, 17 bytes a pixel.
+            let scratch = 17 * (w * h) as u64;
+            assert!(
+                held <= estimate,
+                "{w}x{h}: holds {held}, estimated {estimate}"
+            );
+            assert!(
+                estimate <= held + scratch,
+                "{w}x{h}: estimate {estimate} far above {held}"
+            );
+        }
     }
 
     fn grid(w: usize, h: usize) -> Vec<(usize, usize, f32)> {

@@ -9,9 +9,15 @@
 //!   (`3 N`);
 //! - with scan placement, the max-flow graph of one patch and the FFT search of one patch over
 //!   an input;
-//! - every input (the exemplar and its deformed copies): the image, its feature map (mask,
-//!   tangent, response: `9` bytes a pixel) and the feature index and gradients (about `16`).
+//! - every input (the exemplar and its deformed copies): its feature map (mask, tangent,
+//!   response: `9` bytes a pixel), one feature index
+//!   ([`super::matching::INDEX_BYTES_PER_PIXEL`], 43 bytes a pixel with the scratch of its
+//!   construction; until 2026-12-02 the estimate said 16 while an index held 42 bytes a pixel
+//!   in wasm and 58 natively, and graph-cut placement built two per input), and its image: the
+//!   scan placement's own copy (`4c`); under graph-cut placement the images are graph cut's
+//!   sources, the exemplar counted with them and the deformed copies here (`4c + 8`).
 
+use super::matching::INDEX_BYTES_PER_PIXEL;
 use super::options::{FeatureOptions, FeaturePlacement};
 use crate::core::budget::{WorkingSet, image_bytes};
 use crate::methods::graphcut::memory::{GRAPH_BYTES_PER_PATCH_PIXEL, search_bytes};
@@ -35,10 +41,23 @@ pub fn working_set(
     let c = channels as u64;
     let step = options.patch_size.saturating_sub(options.zone()).max(1);
     let origins = (w.div_ceil(step) + 1) as u64 * (h.div_ceil(step) + 1) as u64;
-    let input_pixels: u64 = inputs.iter().map(|&(w, h)| w as u64 * h as u64).sum();
+    let pixels = |inputs: &[(usize, usize)]| -> u64 {
+        inputs.iter().map(|&(w, h)| w as u64 * h as u64).sum()
+    };
+    let input_pixels = pixels(inputs);
+    // Each input's feature map and index, and its image: the scan placement's own copy, while
+    // under graph-cut placement the images are the synthesis's sources (the exemplar counted
+    // with it, the deformed copies here, with their gradients as graph cut counts them).
+    let images = match options.placement {
+        FeaturePlacement::Scan => input_pixels * 4 * c,
+        FeaturePlacement::Graphcut => pixels(inputs.get(1..).unwrap_or_default()) * (4 * c + 8),
+    };
     let mut set = WorkingSet::new()
         .with("output", image_bytes(w, h, channels) + n * 6 + origins * 16)
-        .with("inputs", input_pixels * (4 * c + 25));
+        .with(
+            "inputs",
+            input_pixels * (9 + INDEX_BYTES_PER_PIXEL) + images,
+        );
     match options.placement {
         FeaturePlacement::Graphcut => set.add("feature scratch", n * 8),
         FeaturePlacement::Scan => {

@@ -44,19 +44,14 @@ pub struct FeatureEvent {
     pub done: bool,
 }
 
-/// One input (the exemplar or a deformed copy) ready for searching.
+/// One input (the exemplar or a deformed copy) ready for the scan placement's search.
+/// Graph-cut placement keeps its inputs in [`GraphcutFeatures`] alone (its sources and their
+/// feature indexes): an index is four distance transforms, and over a 12-megapixel photo a
+/// second copy of the inputs was most of a gigabyte.
 struct Input {
     image: Image,
     map: FeatureMap,
     index: FeatureIndex,
-}
-
-/// Width and height of every input, for the memory estimate.
-fn input_sizes(inputs: &[Input]) -> Vec<(usize, usize)> {
-    inputs
-        .iter()
-        .map(|i| (i.image.width(), i.image.height()))
-        .collect()
 }
 
 /// The last placement, for the teaching views.
@@ -76,7 +71,10 @@ pub struct Placement {
 /// A feature-guided synthesis in progress.
 pub struct FeatureSynthesis {
     options: FeatureOptions,
+    /// The scan placement's inputs (empty under graph-cut placement).
     inputs: Vec<Input>,
+    /// Width and height of every input, for the memory estimate.
+    input_dims: Vec<(usize, usize)>,
     output: Image,
     filled: Vec<bool>,
     feature: Vec<bool>,
@@ -97,6 +95,36 @@ impl FeatureSynthesis {
     /// the extra inputs.
     pub fn new(exemplar: &Image, map: Option<FeatureMap>, options: FeatureOptions) -> Result<Self> {
         options.validate(exemplar.width(), exemplar.height())?;
+        // The inputs' images first, so that the budget is checked before any detection (over a
+        // photo, detection and the indexes are most of the set-up's time and memory).
+        let mut extras = Vec::new();
+        for d in &options.extra_inputs {
+            let image = d.apply(exemplar)?;
+            if image.width() >= options.patch_size && image.height() >= options.patch_size {
+                extras.push(image);
+            }
+        }
+        let (w, h) = (options.output_width, options.output_height);
+        // The budget is checked before anything of the output's size is allocated.
+        let graphcut_options = GraphcutOptions {
+            output_width: w,
+            output_height: h,
+            seed: options.seed,
+            memory_budget_mib: options.memory_budget_mib,
+            ..GraphcutOptions::default()
+        };
+        let graphcut_set = (options.placement == FeaturePlacement::Graphcut)
+            .then(|| graphcut_estimate(exemplar, &graphcut_options))
+            .transpose()?;
+        let dims: Vec<(usize, usize)> = std::iter::once(exemplar)
+            .chain(&extras)
+            .map(|i| (i.width(), i.height()))
+            .collect();
+        working_set(&options, &dims, exemplar.channels(), graphcut_set.as_ref()).check(
+            &format!("output {w}x{h}"),
+            METHOD,
+            options.memory_budget_mib,
+        )?;
         let first_map = match map {
             Some(m) if (m.width, m.height) == (exemplar.width(), exemplar.height()) => m,
             Some(m) => {
@@ -113,48 +141,16 @@ impl FeatureSynthesis {
             }
             None => detect(exemplar, options.detect)?,
         };
-        let mut inputs = vec![Input {
-            index: FeatureIndex::new(&first_map),
-            map: first_map,
-            image: exemplar.clone(),
-        }];
-        for d in &options.extra_inputs {
-            let image = d.apply(exemplar)?;
-            if image.width() < options.patch_size || image.height() < options.patch_size {
-                continue;
-            }
-            let map = detect(&image, options.detect)?;
-            inputs.push(Input {
-                index: FeatureIndex::new(&map),
-                map,
-                image,
-            });
+        let mut maps = vec![first_map];
+        for image in &extras {
+            maps.push(detect(image, options.detect)?);
         }
-        let (w, h) = (options.output_width, options.output_height);
-        // The budget is checked before anything of the output's size is allocated.
-        let graphcut_options = GraphcutOptions {
-            output_width: w,
-            output_height: h,
-            seed: options.seed,
-            memory_budget_mib: options.memory_budget_mib,
-            ..GraphcutOptions::default()
-        };
-        let graphcut_set = (options.placement == FeaturePlacement::Graphcut)
-            .then(|| graphcut_estimate(exemplar, &graphcut_options))
-            .transpose()?;
-        let dims = input_sizes(&inputs);
-        working_set(&options, &dims, exemplar.channels(), graphcut_set.as_ref()).check(
-            &format!("output {w}x{h}"),
-            METHOD,
-            options.memory_budget_mib,
-        )?;
+        let mut inputs = Vec::new();
         let graphcut = if options.placement == FeaturePlacement::Graphcut {
-            let extra = inputs.iter().skip(1).map(|i| i.image.clone()).collect();
-            let maps = inputs.iter().map(|i| i.map.clone()).collect();
             Some(GraphcutFeatures::new(
                 exemplar,
                 maps,
-                extra,
+                extras,
                 graphcut_options,
                 HybridOptions {
                     feature_weight: options.feature_weight,
@@ -164,6 +160,14 @@ impl FeatureSynthesis {
                 },
             )?)
         } else {
+            let images = std::iter::once(exemplar.clone()).chain(extras);
+            for (image, map) in images.zip(maps) {
+                inputs.push(Input {
+                    index: FeatureIndex::new(&map),
+                    map,
+                    image,
+                });
+            }
             None
         };
         let step = options.patch_size - options.zone();
@@ -184,6 +188,7 @@ impl FeatureSynthesis {
             ssd: SsdSearch::new(),
             last: None,
             placement: Placement::default(),
+            input_dims: dims,
             graphcut,
             inputs,
             options,
@@ -199,7 +204,7 @@ impl FeatureSynthesis {
             .map(|g| g.session.synthesis().working_set());
         working_set(
             &self.options,
-            &input_sizes(&self.inputs),
+            &self.input_dims,
             self.output.channels(),
             graphcut.as_ref(),
         )
@@ -236,7 +241,10 @@ impl FeatureSynthesis {
     /// The exemplar's feature map (as detected or given).
     #[must_use]
     pub fn exemplar_map(&self) -> &FeatureMap {
-        &self.inputs[0].map
+        match &self.graphcut {
+            Some(g) => &g.features[0].map,
+            None => &self.inputs[0].map,
+        }
     }
 
     #[must_use]
