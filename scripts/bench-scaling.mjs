@@ -2,7 +2,7 @@
 // per case (wasm memory never shrinks, so a run's peak is the memory's size after it).
 //   node scripts/bench-scaling.mjs [--outputs 256,512,1024,2048,4096] [--exemplars 64,128,256,512,1024,3000]
 //                                  [--methods optimization,graphcut,subpatch,features,flow]
-//                                  [--svg www/scaling.svg]
+//                                  [--svg www/scaling.svg] [--repeat 1]
 // Output sweep: the 128x128 www/samples/tiles_128.png to each square output size, up to each
 // method's LARGEST (4096 for texture optimisation and both graph-cut placements, 1024 for
 // feature-guided synthesis and flow: larger cases take minutes each). Exemplar sweep: gravel (the 512x512
@@ -10,7 +10,10 @@
 // above it) to a 256x256 output. Flow animation is timed per frame after the first (frames per
 // second over 4 frames); every other method runs to done. Prints two markdown tables (total
 // time, longest step, peak wasm memory) and writes a log-log plot of time against output pixels
-// as SVG. Needs the wasm package: ./scripts/build.sh.
+// as SVG. `--repeat N` runs every case N times, each in a fresh process, and reports the best
+// run with the range of all (this machine's speed swings by up to 1.5x within an hour: the best
+// of several is what the code costs, the range what a user may see). `--case method:size:side`
+// runs one case once and prints it as JSON. Needs the wasm package: ./scripts/build.sh.
 import { spawnSync } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
@@ -84,12 +87,16 @@ if (args.case) {
   process.exit(0);
 }
 
-const outputs = (args.outputs ?? '256,512,1024,2048,4096').split(',').map(Number);
-const exemplars = (args.exemplars ?? '64,128,256,512,1024,3000').split(',').map(Number);
+// `--exemplars none` (or any list without a size) skips the exemplar sweep; likewise outputs.
+const sizes = (list) => list.split(',').map(Number).filter((n) => n > 0);
+const outputs = sizes(args.outputs ?? '256,512,1024,2048,4096');
+const exemplars = sizes(args.exemplars ?? '64,128,256,512,1024,3000');
 const methods = (args.methods ?? Object.keys(METHODS).join(',')).split(',');
 const script = fileURLToPath(import.meta.url);
 
-function measure(method, size, side) {
+const repeat = Math.max(1, Math.round(Number(args.repeat ?? 1)) || 1);
+
+function measureOnce(method, size, side) {
   const child = spawnSync(process.execPath, [script, '--case', `${method}:${size}:${side}`], { encoding: 'utf8', maxBuffer: 1 << 20 });
   if (child.status !== 0) {
     const msg = (child.stderr.match(/Error: (.*)/) ?? [, child.stderr.trim().split('\n').pop()])[1];
@@ -98,15 +105,33 @@ function measure(method, size, side) {
   return JSON.parse(child.stdout.trim().split('\n').pop());
 }
 
+/** The best of `repeat` runs (the shortest time, or the most frames per second), with `runs`
+ * holding every run's time or rate; the first failure is returned as it is. */
+function measure(method, size, side) {
+  const runs = [];
+  for (let i = 0; i < repeat; i++) {
+    const r = measureOnce(method, size, side);
+    if (r.error) return r;
+    runs.push(r);
+  }
+  const score = (r) => (r.fps != null ? -r.fps : r.ms);
+  const best = runs.reduce((a, b) => (score(b) < score(a) ? b : a));
+  return { ...best, runs: runs.map((r) => r.fps ?? r.ms) };
+}
+
 const cell = (r) => {
   if (!r) return '| not run | | |';
   if (r.error) return `| failed: ${r.error} | | |`;
-  const time = r.fps != null ? `${r.fps.toFixed(2)} fps` : `${(r.ms / 1000).toFixed(2)} s`;
-  return `| ${time} | ${r.longest.toFixed(0)} ms | ${(r.peak / MiB).toFixed(0)} MiB |`;
+  const fps = r.fps != null;
+  const show = (v) => (fps ? `${v.toFixed(2)} fps` : `${(v / 1000).toFixed(2)} s`);
+  const range = r.runs?.length > 1
+    ? ` (${r.runs.length} runs: ${(fps ? Math.min(...r.runs) : Math.min(...r.runs) / 1000).toFixed(2)}-${(fps ? Math.max(...r.runs) : Math.max(...r.runs) / 1000).toFixed(2)})`
+    : '';
+  return `| ${show(fps ? r.fps : r.ms)}${range} | ${r.longest.toFixed(0)} ms | ${(r.peak / MiB).toFixed(0)} MiB |`;
 };
 
 const results = {};
-console.log(`wasm (Node ${process.version}), one process per case; time to done (flow: frames per second after the first), longest step, peak wasm memory`);
+console.log(`wasm (Node ${process.version}), one process per case${repeat > 1 ? ` run ${repeat} times (the best, and the range of all runs)` : ''}; time to done (flow: frames per second after the first), longest step, peak wasm memory`);
 console.log('\nOutput size (tiles_128.png):\n');
 console.log('| method | output | pixels | time | longest step | peak memory |');
 console.log('|---|---|---:|---:|---:|---:|');
@@ -118,9 +143,11 @@ for (const method of methods) {
     console.log(`| ${METHODS[method]} | ${size}x${size} | ${size * size} ${cell(r)}`);
   }
 }
-console.log('\nExemplar size (gravel, shrunk or mirror-tiled) to 256x256:\n');
-console.log('| method | exemplar | time | longest step | peak memory |');
-console.log('|---|---|---:|---:|---:|');
+if (exemplars.length) {
+  console.log('\nExemplar size (gravel, shrunk or mirror-tiled) to 256x256:\n');
+  console.log('| method | exemplar | time | longest step | peak memory |');
+  console.log('|---|---|---:|---:|---:|');
+}
 for (const method of methods.filter((m) => m !== 'flow')) {
   for (const side of exemplars) {
     console.log(`| ${METHODS[method]} | ${side}x${side} ${cell(measure(method, 256, side))}`);
