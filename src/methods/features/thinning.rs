@@ -97,19 +97,22 @@ fn is_simple(n: &[bool; 8]) -> bool {
 pub fn thin(mask: &mut [bool], response: &[f32], width: usize, height: usize) -> usize {
     let mut removed = 0;
     loop {
-        let mut border: Vec<usize> = (0..width * height)
+        // Each border pixel as one integer key, its response's total order above its index:
+        // sorting the keys gives the order of `(response, index)` with no look-up per
+        // comparison (over a 12-megapixel photo the indirect sort was a tenth of the set-up).
+        let mut border: Vec<u64> = (0..width * height)
             .filter(|&i| {
                 mask[i] && {
                     let n = neighbours(mask, width, height, i % width, i / width);
                     [0usize, 2, 4, 6].iter().any(|&k| !n[k])
                 }
             })
+            .map(|i| (u64::from(ordered_bits(response[i])) << 32) | i as u64)
             .collect();
-        // Unstable is the same order here (no two keys are equal: ties go by index) without
-        // the stable sort's buffer.
-        border.sort_unstable_by(|&a, &b| response[a].total_cmp(&response[b]).then(a.cmp(&b)));
+        border.sort_unstable();
         let mut changed = false;
-        for i in border {
+        for key in border {
+            let i = (key & u64::from(u32::MAX)) as usize;
             let n = neighbours(mask, width, height, i % width, i / width);
             let count = n.iter().filter(|&&v| v).count();
             if count <= 1 {
@@ -125,6 +128,13 @@ pub fn thin(mask: &mut [bool], response: &[f32], width: usize, height: usize) ->
             return removed;
         }
     }
+}
+
+/// `v`'s bits mapped so that unsigned order is `f32::total_cmp`'s (negatives flipped whole,
+/// positives above them).
+fn ordered_bits(v: f32) -> u32 {
+    let b = v.to_bits();
+    if b >> 31 == 1 { !b } else { b | 1 << 31 }
 }
 
 /// 8-connected components of `mask`.
@@ -175,6 +185,27 @@ pub fn endpoints(mask: &[bool], width: usize, height: usize) -> usize {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn ordered_bits_sort_as_total_cmp_does() {
+        let mut values = vec![
+            -f32::INFINITY,
+            -3.5,
+            -1e-30,
+            -0.0,
+            0.0,
+            1e-30,
+            0.25,
+            0.5,
+            7.0,
+            f32::INFINITY,
+        ];
+        let mut by_bits = values.clone();
+        values.sort_by(f32::total_cmp);
+        by_bits.sort_by_key(|&v| super::ordered_bits(v));
+        let bits = |v: &[f32]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&values), bits(&by_bits));
+    }
+
     use super::*;
 
     fn draw(w: usize, h: usize, inside: impl Fn(f32, f32) -> bool) -> Vec<bool> {
