@@ -141,7 +141,10 @@ mod tests {
                 worst_near = worst_near.max(err);
             }
         }
-        assert!(worst_near < 1e-6, "worst relative error up to t = 8: {worst_near}");
+        assert!(
+            worst_near < 1e-6,
+            "worst relative error up to t = 8: {worst_near}"
+        );
         // Up to t = 40 (weights of 4e-18): the f32 rounding of t log2(e) is most of it there.
         assert!(worst < 3e-6, "worst relative error {worst}");
         assert_eq!(neg_exp(0.0), 1.0);
