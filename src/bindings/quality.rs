@@ -5,10 +5,9 @@ use wasm_bindgen::prelude::*;
 use super::error::JsResult;
 use super::exemplar::Exemplar;
 use super::options::object;
-use crate::core::budget::DEFAULT_MEMORY_BUDGET_MIB;
 use crate::core::codec::check_rgba8;
 use crate::core::from_rgba8;
-use crate::methods::quality::{quality, working_set};
+use crate::methods::quality::{check_budget, quality};
 
 /// Scores an output (RGBA8 pixels, e.g. what a session rendered) against its exemplar:
 /// `{ coherence, completeness, histogram, flat }`, all lower-is-better (see the README). An
@@ -24,11 +23,7 @@ pub fn measure_quality(
     let (w, h) = (width as usize, height as usize);
     check_rgba8(w, h, rgba.len())?;
     let ex = exemplar.image();
-    working_set((ex.width(), ex.height()), (w, h)).check(
-        &format!("output {w}x{h}"),
-        "measuring quality",
-        DEFAULT_MEMORY_BUDGET_MIB,
-    )?;
+    check_budget((ex.width(), ex.height()), (w, h))?;
     let output = from_rgba8(w, h, rgba)?;
     let q = quality(exemplar.image(), &output)?;
     Ok(object(&[

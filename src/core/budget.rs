@@ -79,6 +79,23 @@ impl WorkingSet {
     /// Fails when the estimate exceeds `budget_mib`, with a message naming `size` (e.g.
     /// "output 4096x4096"), the method, the estimate and its largest parts, and the limit.
     pub fn check(&self, size: &str, method: &str, budget_mib: usize) -> Result<()> {
+        self.check_with_remedy(
+            size,
+            method,
+            budget_mib,
+            "set memoryBudgetMiB or choose a smaller output",
+        )
+    }
+
+    /// [`WorkingSet::check`] with its own advice at the end of the message, for a caller whose
+    /// size is not the output's, or that takes no budget option.
+    pub fn check_with_remedy(
+        &self,
+        size: &str,
+        method: &str,
+        budget_mib: usize,
+        remedy: &str,
+    ) -> Result<()> {
         let bytes = self.bytes();
         if bytes <= budget_mib as u64 * MIB {
             return Ok(());
@@ -92,7 +109,7 @@ impl WorkingSet {
             .collect();
         Err(Error::MemoryBudget(format!(
             "{size}: {method} needs about {} (estimate: {}), more than the memory budget of \
-             {budget_mib} MiB; set memoryBudgetMiB or choose a smaller output",
+             {budget_mib} MiB; {remedy}",
             format_bytes(bytes),
             detail.join(", ")
         )))

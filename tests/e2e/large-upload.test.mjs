@@ -192,6 +192,48 @@ test('Use it whole keeps 1200x900; a small upload and a sample show no prompt', 
   assert.deepEqual(errors, []);
 });
 
+test('a photo used whole synthesises, and the quality line says why it is not measured', async () => {
+  const { page, errors } = demo;
+  // 4000x3000, the size of a phone photo: its patch index alone would pass the memory budget.
+  // Flat tiles of colour, so that the PNG stays small (a gradient made 11 MB).
+  const photo = Buffer.from(await page.evaluate(async () => {
+    const canvas = new OffscreenCanvas(4000, 3000);
+    const ctx = canvas.getContext('2d');
+    for (let y = 0; y < 3000; y += 250) {
+      for (let x = 0; x < 4000; x += 250) {
+        ctx.fillStyle = `hsl(${(x / 10 + y / 7) % 360} 50% 45%)`;
+        ctx.fillRect(x, y, 250, 250);
+      }
+    }
+    const bytes = new Uint8Array(await (await canvas.convertToBlob({ type: 'image/png' })).arrayBuffer());
+    let text = '';
+    for (const b of bytes) text += String.fromCharCode(b);
+    return btoa(text);
+  }), 'base64');
+  await page.click('button[data-panel="graphcut"]');
+  await page.fill('#out-width', '64');
+  await page.fill('#out-height', '64');
+  await page.dispatchEvent('#out-height', 'change');
+  await upload(page, 'photo.png', photo);
+  await page.waitForSelector('#large-upload[open]');
+  await page.click(choice('whole'));
+  await page.waitForSelector('body[data-exemplar="photo.png"]', { timeout: 60_000 });
+  assert.equal(await exemplarSize(page), '4000x3000');
+  await page.click('#run');
+  await page.waitForSelector('body[data-graphcut-done="true"]', { timeout: 120_000 });
+  const quality = await page.textContent('#gc-quality');
+  assert.match(quality, /^quality not measured: exemplar 4000x3000: measuring quality needs about 1\.\d GiB .*shrink or crop the exemplar first/);
+  assert.equal(await page.getAttribute('#gc-quality', 'data-failed'), 'true');
+  await page.screenshot({ path: `${RESULTS}/large-upload-photo-quality.png`, fullPage: true });
+  // Back to the state the next test starts from.
+  await page.fill('#out-width', '256');
+  await page.fill('#out-height', '256');
+  await page.dispatchEvent('#out-height', 'change');
+  await page.click('button[data-sample="brick_128"]');
+  await page.waitForSelector('body[data-exemplar="brick 128×128"]');
+  assert.deepEqual(errors, []);
+});
+
 test('a corrupt upload still shows the library\'s message', async () => {
   const { page } = demo;
   await upload(page, 'broken.png', Buffer.concat([bigPng.subarray(0, 8), Buffer.from('truncated')]));

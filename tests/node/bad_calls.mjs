@@ -79,6 +79,8 @@ export const BAD_CALLS = [
   ['measureQuality: NaN size', () => api.measureQuality(ex(), rgba(4, 4), NaN, NaN), /size/],
   ['measureQuality: 65536x65536 claimed', () => api.measureQuality(ex(), rgba(4, 4), 65536, 65536), /size/],
   ['measureQuality: 4096x4096 output, past the memory budget', () => api.measureQuality(ex(), new Uint8Array(4096 * 4096 * 4), 4096, 4096), /output 4096x4096: measuring quality needs about 1\.\d GiB .*patch index/],
+  // A photo used whole as the exemplar: the exemplar is named, with what to do (no budget option).
+  ['measureQuality: 4000x3000 exemplar, past the memory budget', () => api.measureQuality(api.Exemplar.fromRgba(new Uint8Array(4000 * 3000 * 4), 4000, 3000), rgba(64, 64), 64, 64), /^exemplar 4000x3000: measuring quality needs about 1\.\d GiB .*shrink or crop the exemplar first \(Exemplar\.resized, Exemplar\.cropped\)$/],
   ['measureQuality: 1x1 exemplar', () => api.measureQuality(api.Exemplar.fromRgba(new Uint8Array(4), 1, 1), rgba(8, 8), 8, 8), { either: /size|exemplar|small/ }],
   // flowField.
   ['flowField: not an object', () => api.flowField('vortex', 8, 8, 0), 'flow'],

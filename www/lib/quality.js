@@ -21,6 +21,7 @@ function write(element, q, size) {
   element.dataset.flat = String(q.flat);
   if (q.window) element.dataset.window = `${q.window.x},${q.window.y},${q.window.width},${q.window.height}`;
   else delete element.dataset.window;
+  delete element.dataset.failed;
 }
 
 /**
@@ -37,4 +38,21 @@ export function showQuality(element, exemplar, session) {
   session.renderInto(image.data);
   write(element, measureQuality(exemplar, image.data, session.width, session.height), size);
   return Promise.resolve();
+}
+
+/**
+ * showQuality, and where scoring fails (a photo used whole as the exemplar passes the memory
+ * budget, for one) the reason in `element` instead of the figures, so the panel says why there
+ * are none rather than leaving the line empty. Resolves to true when the figures are shown, false
+ * when not; a failure after the panel moved on (`isCurrent()` false: a reset freed the session)
+ * is dropped.
+ */
+export function showQualityOrWhy(element, exemplar, session, isCurrent = () => true) {
+  return showQuality(element, exemplar, session).then(() => true, (error) => {
+    if (isCurrent()) {
+      element.textContent = `quality not measured: ${error?.message ?? error}`;
+      element.dataset.failed = 'true';
+    }
+    return false;
+  });
 }

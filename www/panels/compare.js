@@ -6,7 +6,7 @@
 // sessions run in the page's worker and are stepped in turn by the page's Runner, one step of one
 // method per step, so all of them are seen growing together.
 import { drawInto } from '../lib/canvas.js';
-import { showQuality } from '../lib/quality.js';
+import { showQualityOrWhy } from '../lib/quality.js';
 import { pageWorker, remoteSession } from '../lib/worker.js';
 
 export const id = 'compare';
@@ -183,8 +183,8 @@ export function createPanel(ui) {
       if (event.methodDone) {
         const element = ui.$(`cmp-quality-${run.method.key}`);
         const mine = generation;
-        run.quality = showQuality(element, ui.exemplar(), run.session).then(() => {
-          if (mine !== generation) return;
+        run.quality = showQualityOrWhy(element, ui.exemplar(), run.session, () => mine === generation).then((shown) => {
+          if (mine !== generation || !shown) return;
           const figure = (name) => Number(element.dataset[name]);
           run.figures = {
             coherence: figure('coherence'), completeness: figure('completeness'), histogram: figure('histogram'), flat: figure('flat'), time: run.time,

@@ -6,7 +6,7 @@
 // edited here (one call on an exemplar-sized image) and sent along as a mask.
 import { detectFeatures, measureBrokenFeatures } from '../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../lib/canvas.js';
-import { showQuality } from '../lib/quality.js';
+import { showQualityOrWhy } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
 import { paintable } from '../lib/keyboard-brush.js';
 import { remoteSession } from '../lib/worker.js';
@@ -286,7 +286,8 @@ export function createPanel(ui) {
           const b = broken(synthesis);
           const quality = ui.$('fg-quality');
           quality.dataset.broken = String(b);
-          showQuality(quality, ui.exemplar(), synthesis).then(() => {
+          const scored = synthesis;
+          showQualityOrWhy(quality, ui.exemplar(), synthesis, () => synthesis === scored).then(() => {
             quality.textContent += ` · broken features ${b.toFixed(1)}`;
             if (!ui.$('fg-compare').checked) document.body.dataset.featuresDone = 'true';
           });

@@ -3,7 +3,7 @@
 // map and the label map; the total seam cost is plotted against the number of patches.
 import { drawInto, drawOverlay, strokeRect } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
-import { showQuality } from '../lib/quality.js';
+import { showQualityOrWhy } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
 import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
@@ -166,7 +166,8 @@ export function createPanel(ui) {
         `total seam cost ${event.totalSeamCost.toFixed(1)} · ${event.covered ? 'covered' : 'covering…'}`;
       document.body.dataset.patches = String(event.patchesPlaced);
       if (event.done) {
-        showQuality(ui.$('gc-quality'), ui.exemplar(), session).then(() => {
+        const scored = session;
+        showQualityOrWhy(ui.$('gc-quality'), ui.exemplar(), session, () => session === scored).then(() => {
           document.body.dataset.graphcutDone = 'true';
         });
       }

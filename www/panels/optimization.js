@@ -4,7 +4,7 @@
 // the output become soft constraints (section 4) and the synthesis runs on to follow them.
 import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
-import { showQuality } from '../lib/quality.js';
+import { showQualityOrWhy } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
 import { paintable, unpaintable } from '../lib/keyboard-brush.js';
 import { remoteSession } from '../lib/worker.js';
@@ -316,7 +316,8 @@ export function createPanel(ui) {
       document.body.dataset.steps = String(Number(document.body.dataset.steps ?? 0) + 1);
       document.body.dataset.stepKind = event.kind;
       if (event.done) {
-        showQuality(ui.$('to-quality'), ui.exemplar(), session).then(() => {
+        const scored = session;
+        showQualityOrWhy(ui.$('to-quality'), ui.exemplar(), session, () => session === scored).then(() => {
           document.body.dataset.optimizationDone = 'true';
         });
       }

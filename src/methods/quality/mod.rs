@@ -50,14 +50,9 @@ pub fn quality(exemplar: &Image, output: &Image) -> Result<Quality> {
             });
         }
     }
-    working_set(
+    check_budget(
         (exemplar.width(), exemplar.height()),
         (output.width(), output.height()),
-    )
-    .check(
-        &format!("output {}x{}", output.width(), output.height()),
-        "measuring quality",
-        DEFAULT_MEMORY_BUDGET_MIB,
     )?;
     let ex = exemplar.with_channels(3)?;
     let out = output.with_channels(3)?;
@@ -76,9 +71,6 @@ pub fn quality(exemplar: &Image, output: &Image) -> Result<Quality> {
 /// with an error rather than run the wasm memory out; a 2048x2048 one needs about 400 MiB.
 #[must_use]
 pub fn working_set(exemplar: (usize, usize), output: (usize, usize)) -> WorkingSet {
-    let patches = |(w, h): (usize, usize)| {
-        (w.saturating_sub(PATCH) + 1) as u64 * (h.saturating_sub(PATCH) + 1) as u64
-    };
     WorkingSet::new()
         .with("exemplar", image_bytes(exemplar.0, exemplar.1, 3))
         .with("output", image_bytes(output.0, output.1, 3))
@@ -87,6 +79,36 @@ pub fn working_set(exemplar: (usize, usize), output: (usize, usize)) -> WorkingS
             patches(output).max(patches(exemplar)) * nearest::BYTES_PER_PATCH,
         )
         .with("local contrast", image_bytes(output.0, output.1, 1))
+}
+
+/// The patches of a `(width, height)` image (top-left corners of its 7x7 patches).
+fn patches((w, h): (usize, usize)) -> u64 {
+    (w.saturating_sub(PATCH) + 1) as u64 * (h.saturating_sub(PATCH) + 1) as u64
+}
+
+/// Refuses, before anything is allocated, a scoring that would pass the default memory budget,
+/// naming what makes it large (the image with more patches to index: a photo used whole as the
+/// exemplar, or a huge output) and what to do about it (the caller has no budget to raise).
+pub fn check_budget(exemplar: (usize, usize), output: (usize, usize)) -> Result<()> {
+    let (what, (w, h), remedy) = if patches(exemplar) > patches(output) {
+        (
+            "exemplar",
+            exemplar,
+            "shrink or crop the exemplar first (Exemplar.resized, Exemplar.cropped)",
+        )
+    } else {
+        (
+            "output",
+            output,
+            "measure a window of the output (the page scores its central 512x512)",
+        )
+    };
+    working_set(exemplar, output).check_with_remedy(
+        &format!("{what} {w}x{h}"),
+        "measuring quality",
+        DEFAULT_MEMORY_BUDGET_MIB,
+        remedy,
+    )
 }
 
 /// Coherence against the exemplar at whole and half-pixel positions: each output patch's
@@ -275,6 +297,31 @@ mod tests {
             let sd = (lum.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / 49.0).sqrt();
             assert!((f64::from(c) - sd).abs() < 1e-4, "{c} vs {sd}");
         }
+    }
+
+    #[test]
+    fn a_refusal_names_the_image_that_makes_the_index_large_and_what_to_do() {
+        // A photo used whole as the exemplar of a small output: the exemplar is named, with
+        // shrinking or cropping it as the way out (measureQuality takes no budget option).
+        let msg = check_budget((4000, 3000), (256, 256))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            msg.starts_with("exemplar 4000x3000: measuring quality needs about 1.1 GiB")
+                && msg.contains("Exemplar.resized")
+                && !msg.contains("memoryBudgetMiB"),
+            "{msg}"
+        );
+        let msg = check_budget((128, 128), (4096, 4096))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            msg.starts_with("output 4096x4096: measuring quality")
+                && msg.contains("window of the output")
+                && !msg.contains("memoryBudgetMiB"),
+            "{msg}"
+        );
+        assert!(check_budget((2000, 1500), (512, 512)).is_ok());
     }
 
     #[test]
