@@ -123,11 +123,9 @@ const cell = (r) => {
   if (!r) return '| not run | | |';
   if (r.error) return `| failed: ${r.error} | | |`;
   const fps = r.fps != null;
-  const show = (v) => (fps ? `${v.toFixed(2)} fps` : `${(v / 1000).toFixed(2)} s`);
-  const range = r.runs?.length > 1
-    ? ` (${r.runs.length} runs: ${(fps ? Math.min(...r.runs) : Math.min(...r.runs) / 1000).toFixed(2)}-${(fps ? Math.max(...r.runs) : Math.max(...r.runs) / 1000).toFixed(2)})`
-    : '';
-  return `| ${show(fps ? r.fps : r.ms)}${range} | ${r.longest.toFixed(0)} ms | ${(r.peak / MiB).toFixed(0)} MiB |`;
+  const figure = (v) => (fps ? v : v / 1000).toFixed(2);
+  const range = r.runs?.length > 1 ? ` (${r.runs.length} runs: ${figure(Math.min(...r.runs))}-${figure(Math.max(...r.runs))})` : '';
+  return `| ${figure(fps ? r.fps : r.ms)} ${fps ? 'fps' : 's'}${range} | ${r.longest.toFixed(0)} ms | ${(r.peak / MiB).toFixed(0)} MiB |`;
 };
 
 const results = {};

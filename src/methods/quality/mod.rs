@@ -303,24 +303,28 @@ mod tests {
     fn a_refusal_names_the_image_that_makes_the_index_large_and_what_to_do() {
         // A photo used whole as the exemplar of a small output: the exemplar is named, with
         // shrinking or cropping it as the way out (measureQuality takes no budget option).
-        let msg = check_budget((4000, 3000), (256, 256))
-            .unwrap_err()
-            .to_string();
-        assert!(
-            msg.starts_with("exemplar 4000x3000: measuring quality needs about 1.1 GiB")
-                && msg.contains("Exemplar.resized")
-                && !msg.contains("memoryBudgetMiB"),
-            "{msg}"
-        );
-        let msg = check_budget((128, 128), (4096, 4096))
-            .unwrap_err()
-            .to_string();
-        assert!(
-            msg.starts_with("output 4096x4096: measuring quality")
-                && msg.contains("window of the output")
-                && !msg.contains("memoryBudgetMiB"),
-            "{msg}"
-        );
+        // A huge output with a small exemplar: the output is named, with measuring a window.
+        let cases = [
+            (
+                (4000, 3000),
+                (256, 256),
+                "exemplar 4000x3000: measuring quality needs about 1.1 GiB",
+                "Exemplar.resized",
+            ),
+            (
+                (128, 128),
+                (4096, 4096),
+                "output 4096x4096: measuring quality",
+                "window of the output",
+            ),
+        ];
+        for (exemplar, output, start, remedy) in cases {
+            let msg = check_budget(exemplar, output).unwrap_err().to_string();
+            assert!(
+                msg.starts_with(start) && msg.contains(remedy) && !msg.contains("memoryBudgetMiB"),
+                "{msg}"
+            );
+        }
         assert!(check_budget((2000, 1500), (512, 512)).is_ok());
     }
 
