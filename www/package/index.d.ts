@@ -398,7 +398,7 @@ export interface FlowAnimationOptions {
   lambda?: number;
   /** Neighbourhood sizes of the frames after the first; sizes wider than the exemplar or the frame are skipped. Default: [32, 16, 8]. */
   frameSizes?: number[];
-  /** Iterations per size per frame. Default: 3. */
+  /** Iterations per size per frame; the last one's M-step only measures its matches (it reports 0 changed). Default: 3. */
   frameIterations?: number;
   /** Default: 1. */
   seed?: number;

@@ -49,7 +49,8 @@ pub struct FlowOptions {
     /// lines came apart; with 32 added it stays at 0.9-1.3x, for about 40% more time per frame
     /// (see the README's flow section for the flow energy this costs).
     pub frame_sizes: Vec<usize>,
-    /// Cap on EM iterations per neighbourhood size per frame. Default: 3.
+    /// Cap on EM iterations per neighbourhood size per frame; the last one's M-step only
+    /// measures the kept matches (see `FlowSession::step_frame`). Default: 3.
     pub frame_iterations: usize,
     /// Seed, search, robust exponent r and wrap-around, shared with the first frame.
     pub seed: u64,

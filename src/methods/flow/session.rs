@@ -481,8 +481,13 @@ impl FlowSession {
         let solver = &mut self.solvers[self.size_index];
         let output = self.current.as_mut().expect("frame begun");
         if self.run.idle() {
+            // The last iteration at a size ends with the E-step's frame: its M-step would only
+            // find matches for the next frame, whose first M-step searches anyway after moving
+            // them along the flow, so it measures them instead (a search costs several
+            // distances a node, a measure one).
+            let last = self.iteration + 1 >= self.options.frame_iterations;
             self.run
-                .begin(solver, output, std::mem::take(&mut self.fresh));
+                .begin(solver, output, std::mem::take(&mut self.fresh), last);
         }
         let work = Work {
             solver,
@@ -508,7 +513,12 @@ impl FlowSession {
             flow_energy,
             changed,
             total_iterations: 0,
-            phase: Phase::MStep,
+            // A measuring iteration ended with its E-step (its M-step searched nothing).
+            phase: if self.run.measure_only {
+                Phase::EStep
+            } else {
+                Phase::MStep
+            },
             progress: 1.0,
         };
         if changed == 0 || self.iteration >= self.options.frame_iterations {

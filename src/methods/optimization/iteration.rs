@@ -107,6 +107,9 @@ pub struct Iteration {
     pub completed: Option<Phase>,
     /// Conjugate-gradient iterations of the last E-step's gradient-energy solve.
     pub solver_iterations: usize,
+    /// Whether this iteration's M-step only measures the kept matches
+    /// ([`LevelSolver::measure`]) instead of searching.
+    pub measure_only: bool,
 }
 
 impl Default for Iteration {
@@ -115,6 +118,7 @@ impl Default for Iteration {
             stage: Stage::Start,
             completed: None,
             solver_iterations: 0,
+            measure_only: false,
         }
     }
 }
@@ -128,8 +132,17 @@ impl Iteration {
 
     /// Begins an iteration on `output`; `fresh`: the output is new to the solver (a level's
     /// up-sampled output, a flow frame's warped start), so it is matched before the E-step.
-    pub fn begin(&mut self, solver: &mut LevelSolver, output: &Image, fresh: bool) {
+    /// `measure_only`: the iteration's M-step measures the kept matches without searching
+    /// (it then reports 0 changed).
+    pub fn begin(
+        &mut self,
+        solver: &mut LevelSolver,
+        output: &Image,
+        fresh: bool,
+        measure_only: bool,
+    ) {
         debug_assert!(self.idle(), "an iteration is under way");
+        self.measure_only = measure_only;
         self.stage = if fresh {
             solver.begin_m_step(output);
             Stage::FirstMatch
@@ -207,6 +220,11 @@ impl Iteration {
                     // a neighbourhood comparison.
                     let mut pixels = chunk.saturating_mul(len) / 8;
                     if solver.resume_histogram(output, constraint, &mut pixels) {
+                        if self.measure_only {
+                            solver.measure(output);
+                            self.stage = Stage::Start;
+                            return Some(0);
+                        }
                         solver.begin_m_step(output);
                         self.stage = Stage::MStep;
                         if budget.halves {
@@ -241,6 +259,86 @@ impl Iteration {
                 0.35 + 0.05 * solver.histogram_fraction(pixels),
             ),
             Stage::MStep => (Phase::MStep, 0.4 + 0.6 * fraction),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::testing::{noise, sample};
+    use crate::methods::optimization::level::LevelSetup;
+
+    fn solver(exemplar: &Image, constrained: bool) -> LevelSolver {
+        let setup = LevelSetup {
+            match_constrained: constrained,
+            ..LevelSetup::plain(64, 64, 8)
+        };
+        LevelSolver::new(exemplar, setup, &mut Rng::new(3))
+    }
+
+    /// One whole iteration on `output`, begun fresh; returns what it reports changed.
+    fn iterate(
+        solver: &mut LevelSolver,
+        exemplar: &Image,
+        output: &mut Image,
+        constraint: Option<&Constraint>,
+        measure_only: bool,
+    ) -> usize {
+        let mut run = Iteration::default();
+        run.begin(solver, output, true, measure_only);
+        let work = Work {
+            solver,
+            exemplar,
+            output,
+            constraint,
+            rng: &mut Rng::new(5),
+        };
+        run.advance(work, StepBudget::new(None, CHUNK_WORK))
+            .expect("a whole iteration")
+    }
+
+    /// The iteration that measures instead of searching leaves the same output (its E-step is
+    /// the same), keeps the matches its first M-step found, and reports their distances to the
+    /// new output as an M-step reports its own.
+    #[test]
+    fn a_measuring_iteration_makes_the_same_output_and_keeps_its_matches() {
+        let exemplar = sample("tiles_64");
+        let start = noise(64, 64, 3, 9);
+        let constraint = Constraint {
+            target: noise(64, 64, 3, 11),
+            mask: vec![1.0; 64 * 64],
+            lambda: 0.2,
+        };
+        for constraint in [None, Some(&constraint)] {
+            let constrained = constraint.is_some();
+            let (mut searched, mut measured) = (start.clone(), start.clone());
+            let mut searching = solver(&exemplar, constrained);
+            let changed = iterate(&mut searching, &exemplar, &mut searched, constraint, false);
+            assert!(changed > 0, "a search from noise changes matches");
+            let mut measuring = solver(&exemplar, constrained);
+            let changed = iterate(&mut measuring, &exemplar, &mut measured, constraint, true);
+            assert_eq!(changed, 0, "a measure changes no match");
+            assert_eq!(searched, measured, "the E-step's output is the same");
+
+            // The matches the first M-step found, searched again on its own.
+            let mut first = solver(&exemplar, constrained);
+            first.m_step(&start, constraint, &mut Rng::new(5));
+            assert_eq!(measuring.matches(), first.matches());
+            assert_ne!(searching.matches(), first.matches());
+
+            // Measured distances equal what an M-step that keeps them reports: a search on the
+            // measured output from these matches reports its distances; measuring its matches
+            // again gives them back.
+            let mut again = solver(&exemplar, constrained);
+            again.m_step(&measured, None, &mut Rng::new(7));
+            let found = again.distances().to_vec();
+            let energy = again.energy();
+            again.measure(&measured);
+            for (&m, &f) in again.distances().iter().zip(&found) {
+                assert!((m - f).abs() <= 1e-5 * f.max(1e-3), "{m} vs {f}");
+            }
+            assert!((again.energy() - energy).abs() <= 1e-6 * energy);
         }
     }
 }

@@ -405,7 +405,6 @@ impl LevelSolver {
             self.running = Some(run);
             return None;
         }
-        let mut query = Query::new(space.vector_len());
         if constraint.is_none() {
             // Costs are distance + penalty of the match (accepted candidates have full sums).
             for ((d, &cost), &m) in self
@@ -416,8 +415,44 @@ impl LevelSolver {
             {
                 *d = cost - occurrence.map_or(0.0, |o| o.penalty(m));
             }
-        } else {
-            // The IRLS weights and the reported energy are about the texture term alone.
+        }
+        // Under a constraint the IRLS weights and the reported energy are about the texture
+        // term alone, so the distances are measured again without it.
+        self.measure_distances(map, constraint.is_some());
+        if run.occurrence.is_some() {
+            self.occurrence_kept = run.occurrence.take();
+        }
+        self.refresh_local();
+        self.settle();
+        Some(run.progress.changed())
+    }
+
+    /// Measures the kept matches against `output` without searching: their distances, IRLS
+    /// weights and texture energy, as the end of an M-step sets them, for one distance per node
+    /// (a search costs several). A flow frame's last iteration at a size ends with this: its
+    /// matches only carry into the next frame, whose first M-step searches from them anyway.
+    pub fn measure(&mut self, output: &Image) {
+        let LevelSetup { mu, wrap, .. } = self.setup;
+        // A measure replaces an M-step: one begun and not finished keeps its penalty.
+        if let Some(o) = self.running.take().and_then(|run| run.occurrence) {
+            self.occurrence_kept = Some(o);
+        }
+        let map = feature_map(output, mu, edge(wrap));
+        self.measure_distances(&map, true);
+        self.settle();
+    }
+
+    /// The distances of the kept matches to the neighbourhoods of `map` (the pixel term; with
+    /// `texture` false only the wavelet energy's pixel distances, the others being set).
+    fn measure_distances(&mut self, map: &FeatureMap, texture: bool) {
+        let LevelSetup { wrap, size, .. } = self.setup;
+        let space = self.matcher.space();
+        let mut query = Query::new(space.vector_len());
+        let plain = || {
+            GridQueries::new(map, (&self.cols, &self.rows), size, wrap)
+                .transformed(self.wavelet.as_ref())
+        };
+        if texture {
             let mut queries = plain();
             for (n, d) in self.distances.iter_mut().enumerate() {
                 let m = self.matches[n];
@@ -444,12 +479,6 @@ impl LevelSolver {
                 );
             }
         }
-        if run.occurrence.is_some() {
-            self.occurrence_kept = run.occurrence.take();
-        }
-        self.refresh_local();
-        self.settle();
-        Some(run.progress.changed())
     }
 
     /// The IRLS weights of the distances just found and their texture energy

@@ -463,7 +463,7 @@ impl Session {
             }
             let output = self.output.as_ref().expect("made above");
             self.run
-                .begin(solver, output, std::mem::take(&mut self.fresh));
+                .begin(solver, output, std::mem::take(&mut self.fresh), false);
             if entering && self.budget.split.is_some() {
                 // Entering a level (its exemplar neighbourhoods, the up-sampled output, carried
                 // matches, the first M-step's feature map) is a step of its own on a large
