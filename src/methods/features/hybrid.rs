@@ -54,55 +54,128 @@ pub fn canvas_features(s: &Synthesis, features: &[SourceFeatures]) -> (Vec<bool>
     let (w, h) = (s.canvas.width, s.canvas.height);
     let mut mask = vec![false; w * h];
     let mut angle = vec![0.0f32; w * h];
-    for i in 0..w * h {
-        let label = s.canvas.label[i];
-        if label == UNCOVERED {
-            continue;
-        }
-        let patch = s.canvas.patches[label as usize];
-        if let Some((sx, sy)) = s.source_coords(patch, i % w, i / w) {
-            let f = &features[patch.source as usize].map;
-            let j = sy * f.width + sx;
-            mask[i] = f.mask[j];
-            angle[i] = f.angle[j];
-        }
+    for (i, (m, a)) in mask.iter_mut().zip(&mut angle).enumerate() {
+        (*m, *a) = canvas_feature(s, features, i);
     }
     (mask, angle)
+}
+
+/// Brings `mask` and `angle` ([`canvas_features`]) up to date after a placement over `rect`
+/// (x, y, width, height in output coordinates; reduced modulo the output on a wrapping canvas):
+/// a placement relabels pixels of its own patch only, so a step costs the patch's area, not the
+/// output's.
+pub fn update_canvas_features(
+    s: &Synthesis,
+    features: &[SourceFeatures],
+    rect: (i64, i64, usize, usize),
+    mask: &mut [bool],
+    angle: &mut [f32],
+) {
+    let (w, h) = (s.canvas.width as i64, s.canvas.height as i64);
+    let (x, y, pw, ph) = rect;
+    let axis = |p: i64, size: i64| {
+        if s.canvas.wrap {
+            Some(p.rem_euclid(size))
+        } else {
+            (0..size).contains(&p).then_some(p)
+        }
+    };
+    for oy in (y..y + ph.min(h as usize) as i64).filter_map(|v| axis(v, h)) {
+        for ox in (x..x + pw.min(w as usize) as i64).filter_map(|u| axis(u, w)) {
+            let i = (oy * w + ox) as usize;
+            (mask[i], angle[i]) = canvas_feature(s, features, i);
+        }
+    }
+}
+
+/// The feature and tangent output pixel `i` shows (none where unmade).
+fn canvas_feature(s: &Synthesis, features: &[SourceFeatures], i: usize) -> (bool, f32) {
+    let w = s.canvas.width;
+    let label = s.canvas.label[i];
+    if label == UNCOVERED {
+        return (false, 0.0);
+    }
+    let patch = s.canvas.patches[label as usize];
+    match s.source_coords(patch, i % w, i / w) {
+        Some((sx, sy)) => {
+            let f = &features[patch.source as usize].map;
+            let j = sy * f.width + sx;
+            (f.mask[j], f.angle[j])
+        }
+        None => (false, 0.0),
+    }
+}
+
+/// A rectangle of output pixels, `x0..x1` by `y0..y1`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Rect {
+    pub x0: usize,
+    pub y0: usize,
+    pub x1: usize,
+    pub y1: usize,
+}
+
+impl Rect {
+    fn width(self) -> usize {
+        self.x1 - self.x0
+    }
+
+    fn pixels(self) -> impl Iterator<Item = (usize, usize)> {
+        (self.y0..self.y1).flat_map(move |y| (self.x0..self.x1).map(move |x| (x, y)))
+    }
 }
 
 /// Where the next patch meets the made output: made pixels within `band` pixels (Chebyshev) of
 /// an unmade one while the output is not covered, and the error region once it is. This is the
 /// context of the feature cost, as the L-shaped overlap is for scan-order patches: the seam runs
-/// there, so that is where features must continue.
+/// there, so that is where features must continue. Over the whole output.
 #[must_use]
 pub fn frontier(s: &Synthesis, band: usize) -> Vec<bool> {
+    let whole = Rect {
+        x0: 0,
+        y0: 0,
+        x1: s.canvas.width,
+        y1: s.canvas.height,
+    };
+    frontier_in(s, band, whole)
+}
+
+/// [`frontier`] over the pixels of `rect` only (row by row), looking `band` pixels around it:
+/// the same values, at a cost that grows with the rectangle rather than the output.
+#[must_use]
+pub fn frontier_in(s: &Synthesis, band: usize, rect: Rect) -> Vec<bool> {
     let (w, h) = (s.canvas.width, s.canvas.height);
     if s.canvas.is_covered() {
         let r = s.error_region();
-        return (0..w * h)
-            .map(|i| {
-                crate::methods::graphcut::placement::region_contains(
-                    r,
-                    i % w,
-                    i / w,
-                    w,
-                    h,
-                    s.canvas.wrap,
-                )
+        return rect
+            .pixels()
+            .map(|(x, y)| {
+                crate::methods::graphcut::placement::region_contains(r, x, y, w, h, s.canvas.wrap)
             })
             .collect();
     }
-    // Distance to the nearest unmade pixel by two separable running minima (Chebyshev).
-    let unmade: Vec<bool> = s.canvas.label.iter().map(|&l| l == UNCOVERED).collect();
+    // Distance to the nearest unmade pixel by two separable running minima (Chebyshev), over
+    // the rectangle grown by the band (an unmade pixel further out is too far to count).
+    let grown = Rect {
+        x0: rect.x0.saturating_sub(band),
+        y0: rect.y0.saturating_sub(band),
+        x1: (rect.x1 + band).min(w),
+        y1: (rect.y1 + band).min(h),
+    };
+    let (gw, gh) = (grown.width(), grown.y1 - grown.y0);
+    let unmade: Vec<bool> = grown
+        .pixels()
+        .map(|(x, y)| s.canvas.label[y * w + x] == UNCOVERED)
+        .collect();
     let dilate = |m: &[bool], along_rows: bool| -> Vec<bool> {
-        let mut out = vec![false; w * h];
-        let (len, lines) = if along_rows { (w, h) } else { (h, w) };
+        let mut out = vec![false; gw * gh];
+        let (len, lines) = if along_rows { (gw, gh) } else { (gh, gw) };
         for line in 0..lines {
             let at = |k: usize| {
                 if along_rows {
-                    line * w + k
+                    line * gw + k
                 } else {
-                    k * w + line
+                    k * gw + line
                 }
             };
             let mut last: Option<usize> = None;
@@ -123,7 +196,12 @@ pub fn frontier(s: &Synthesis, band: usize) -> Vec<bool> {
         out
     };
     let near = dilate(&dilate(&unmade, true), false);
-    (0..w * h).map(|i| near[i] && !unmade[i]).collect()
+    rect.pixels()
+        .map(|(x, y)| {
+            let g = (y - grown.y0) * gw + (x - grown.x0);
+            near[g] && !unmade[g]
+        })
+        .collect()
 }
 
 /// Scores the candidates of one graph-cut step by colour SSD plus feature cost and draws one
@@ -153,9 +231,6 @@ pub fn choose(
         };
         return Some((choice, None));
     }
-    let (mask, angle) = canvas_features(s, features);
-    let near = frontier(s, band);
-    let made_features: Vec<usize> = (0..w * h).filter(|&i| mask[i] && near[i]).collect();
     let mut best: Vec<Candidate> = scored
         .iter()
         .copied()
@@ -174,6 +249,44 @@ pub fn choose(
     let keep = keep.clamp(1, best.len());
     best.select_nth_unstable_by(keep - 1, |a, b| a.cost.total_cmp(&b.cost));
     best.truncate(keep);
+    // The context: the output's feature pixels on the frontier under any kept candidate, in
+    // scan order (with their tangents), found within the candidates' bounds only.
+    let bounds = Rect {
+        x0: best.iter().map(|c| c.patch.tx.max(0)).min().unwrap_or(0) as usize,
+        y0: best.iter().map(|c| c.patch.ty.max(0)).min().unwrap_or(0) as usize,
+        x1: best
+            .iter()
+            .map(|c| {
+                (i64::from(c.patch.tx) + s.patch_extent(c.patch.source as usize).0 as i64)
+                    .clamp(0, w as i64)
+            })
+            .max()
+            .unwrap_or(0) as usize,
+        y1: best
+            .iter()
+            .map(|c| {
+                (i64::from(c.patch.ty) + s.patch_extent(c.patch.source as usize).1 as i64)
+                    .clamp(0, h as i64)
+            })
+            .max()
+            .unwrap_or(0) as usize,
+    };
+    let bounds = Rect {
+        x0: bounds.x0.min(bounds.x1),
+        y0: bounds.y0.min(bounds.y1),
+        ..bounds
+    };
+    let near = frontier_in(s, band, bounds);
+    let made_features: Vec<(usize, f32)> = bounds
+        .pixels()
+        .zip(near)
+        .filter(|&(_, near)| near)
+        .filter_map(|((x, y), _)| {
+            let i = y * w + x;
+            let (feature, angle) = canvas_feature(s, features, i);
+            feature.then_some((i, angle))
+        })
+        .collect();
     let label = &s.canvas.label;
     let mut context: Vec<(usize, usize, f32)> = Vec::new();
     let mut costs: Vec<(f32, usize)> = Vec::with_capacity(best.len());
@@ -188,10 +301,10 @@ pub fn choose(
         let (tx, ty) = (i64::from(c.patch.tx), i64::from(c.patch.ty));
         // The output's features under the patch, at the source pixels the patch shows there.
         context.clear();
-        for &i in &made_features {
+        for &(i, angle) in &made_features {
             let (u, v) = ((i % w) as i64 - tx, (i / w) as i64 - ty);
             if (0..pw as i64).contains(&u) && (0..ph as i64).contains(&v) {
-                context.push(((u + wx) as usize, (v + wy) as usize, angle[i]));
+                context.push(((u + wx) as usize, (v + wy) as usize, angle));
             }
         }
         // The source's features that would land on made output pixels.
@@ -459,6 +572,32 @@ mod tests {
                 let close = made && (x + 5 >= 64 || y + 5 >= 64);
                 assert_eq!(near[y * 96 + x], close, "({x}, {y})");
             }
+        }
+        // Over a part of the output: the same values, though the unmade pixels that make them
+        // lie outside the part.
+        for rect in [
+            Rect {
+                x0: 50,
+                y0: 10,
+                x1: 62,
+                y1: 70,
+            },
+            Rect {
+                x0: 0,
+                y0: 55,
+                x1: 96,
+                y1: 60,
+            },
+            Rect {
+                x0: 59,
+                y0: 59,
+                x1: 60,
+                y1: 60,
+            },
+        ] {
+            let part = frontier_in(&s, 5, rect);
+            let expected: Vec<bool> = rect.pixels().map(|(x, y)| near[y * 96 + x]).collect();
+            assert_eq!(part, expected, "{rect:?}");
         }
     }
 

@@ -10,7 +10,7 @@ use super::alignment::{WarpKind, align};
 #[cfg(test)]
 use super::detect::DetectOptions;
 use super::detect::{FeatureMap, detect};
-use super::hybrid::{GraphcutFeatures, HybridOptions, canvas_features};
+use super::hybrid::{GraphcutFeatures, HybridOptions, update_canvas_features};
 use super::matching::{ContextFeature, FeatureIndex, Region, TAU_MATCH};
 use super::memory::{METHOD, working_set};
 use super::options::{FeatureOptions, FeaturePlacement};
@@ -295,9 +295,13 @@ impl FeatureSynthesis {
     fn place_graphcut(&mut self) -> Result<FeatureEvent> {
         let g = self.graphcut.as_mut().expect("graph-cut placement");
         let e = g.step()?;
-        let (mask, angle) = canvas_features(g.session.synthesis(), &g.features);
-        self.feature = mask;
-        self.angle = angle;
+        update_canvas_features(
+            g.session.synthesis(),
+            &g.features,
+            e.rect,
+            &mut self.feature,
+            &mut self.angle,
+        );
         let (tx, ty, pw, ph) = e.rect;
         let choice = g.last;
         let (w, h) = (self.options.output_width, self.options.output_height);

@@ -147,6 +147,31 @@ mod graphcut_placement {
         (s.image().clone(), events, s.feature_mask().to_vec())
     }
 
+    /// The synthesised feature map, updated over each placement's patch only, equals the map
+    /// made afresh from the whole canvas after every step (covering and refinement alike).
+    #[test]
+    fn the_feature_map_kept_per_patch_equals_the_whole_canvas_map() {
+        let options = FeatureOptions {
+            output_width: 150,
+            output_height: 110,
+            patch_size: 32,
+            ..FeatureOptions::default()
+        };
+        let mut s = FeatureSynthesis::new(&sample("tiles_64"), None, options).unwrap();
+        let mut covered_steps = 0;
+        while !s.is_done() {
+            s.step().unwrap();
+            let g = s.graphcut.as_ref().expect("graph-cut placement");
+            let synthesis = g.session.synthesis();
+            covered_steps += usize::from(synthesis.canvas.is_covered());
+            let (mask, angle) =
+                crate::methods::features::hybrid::canvas_features(synthesis, &g.features);
+            assert_eq!(s.feature_mask(), &mask[..]);
+            assert_eq!(s.feature_angles(), &angle[..]);
+        }
+        assert!(covered_steps > 1, "refinement steps were checked too");
+    }
+
     #[test]
     fn graph_cut_placement_grows_texture_and_feature_map_with_the_feature_cost() {
         let options = FeatureOptions {
