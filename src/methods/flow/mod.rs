@@ -7,6 +7,7 @@ pub mod generators;
 pub mod memory;
 pub mod options;
 pub mod session;
+pub mod setup;
 pub mod warp;
 
 #[cfg(test)]

@@ -6,8 +6,8 @@
 use super::field::FlowField;
 use super::memory::{METHOD, frames_working_set};
 use super::options::{FlowOptions, FlowSource};
-use super::warp::warp;
-use crate::core::{Edge, Error, Image, Result, Rng};
+use super::setup::FrameSetup;
+use crate::core::{Error, Image, Result, Rng};
 use crate::methods::optimization::constraints::Constraint;
 use crate::methods::optimization::iteration::{Iteration, Phase, StepBudget, Work};
 use crate::methods::optimization::level::{LevelSetup, LevelSolver};
@@ -84,6 +84,8 @@ pub struct FlowSession {
     iteration: usize,
     /// Whether the current frame's warp and constraint are set up.
     begun: bool,
+    /// The current frame's set-up while it runs over several steps.
+    setup: Option<FrameSetup>,
     /// True until the first M-step of a (frame, size) ran on the warped start.
     fresh: bool,
     /// The iteration under way, and how long a step works.
@@ -186,6 +188,7 @@ impl FlowSession {
             size_index: 0,
             iteration: 0,
             begun: false,
+            setup: None,
             fresh: false,
             run: Iteration::default(),
             budget,
@@ -426,54 +429,43 @@ impl FlowSession {
         self.begun = false;
     }
 
-    /// Warps the previous frame (and the naive baseline) along f_{t-1}, sets the constraint and
-    /// moves every level's matches along the flow.
-    fn begin_frame(&mut self) -> Result<()> {
-        let field = self.field_at(self.frame - 1)?;
-        let edge = if self.options.tileable {
-            Edge::Wrap
-        } else {
-            Edge::Clamp
-        };
+    /// Sets the current frame up, or part of it on a large frame: warps the previous frame
+    /// (and the naive baseline) along f_{t-1} and moves every level's matches along it; once
+    /// done, sets the constraint. Returns whether it is done.
+    fn begin_frame(&mut self) -> Result<bool> {
         let previous = self.previous.as_ref().expect("a frame is finished");
-        let warped = warp(previous, &field, edge)?;
         let naive = self.naive.as_ref().expect("frame 0 is the naive start");
-        self.naive = Some(warp(naive, &field, edge)?.image);
-        let (w, h) = (
-            self.options.output_width as f64,
-            self.options.output_height as f64,
-        );
-        let wrap = self.options.tileable;
-        for solver in &mut self.solvers {
-            // A node's content came from its centre moved back along the flow.
-            solver.move_along(|cx, cy| {
-                let (vx, vy) = field.near(cx - 0.5, cy - 0.5);
-                let (x, y) = (cx - f64::from(vx), cy - f64::from(vy));
-                if wrap {
-                    (x.rem_euclid(w), y.rem_euclid(h))
-                } else {
-                    (x, y)
-                }
-            });
+        let setup = match &mut self.setup {
+            Some(setup) => setup,
+            None => {
+                let field = self.field_at(self.frame - 1)?;
+                let setup = FrameSetup::new(field, previous, naive, self.options.tileable)?;
+                self.setup.insert(setup)
+            }
+        };
+        if !setup.advance(previous, naive, &mut self.solvers, self.budget.split) {
+            return Ok(false);
         }
-        self.current = Some(warped.image.clone());
+        let start = self.setup.take().expect("set up above").finish();
+        self.naive = Some(start.naive);
+        self.current = Some(start.previous.image.clone());
         self.constraint = Some(Constraint {
-            target: warped.image,
-            mask: warped.inside,
+            target: start.previous.image,
+            mask: start.previous.inside,
             lambda: self.options.lambda,
         });
-        self.field = Some(field);
+        self.field = Some(start.field);
         self.begun = true;
         self.fresh = true;
-        Ok(())
+        Ok(true)
     }
 
     /// One iteration of Algorithm 2 on the current frame at the current neighbourhood size, or
     /// part of one on a large frame (where setting the frame up is a step of its own).
     fn step_frame(&mut self) -> Result<FlowEvent> {
         if !self.begun {
-            self.begin_frame()?;
-            if self.budget.split.is_some() {
+            // On a large frame the set-up takes a step or more of its own.
+            if !self.begin_frame()? || self.budget.split.is_some() {
                 return Ok(self.part_event());
             }
         }

@@ -17,34 +17,77 @@ pub struct Warped {
 
 /// Warps `frame` by `flow` (same size), reading past the borders by `edge`.
 pub fn warp(frame: &Image, flow: &FlowField, edge: Edge) -> Result<Warped> {
-    let (w, h, c) = (frame.width(), frame.height(), frame.channels());
-    if (flow.width(), flow.height()) != (w, h) {
-        return Err(Error::InvalidSize {
-            what: "flow field",
-            width: flow.width(),
-            height: flow.height(),
-            reason: format!("must match the frame size {w}x{h}"),
-        });
-    }
-    let mut image = Image::new(w, h, c)?;
-    let mut inside = vec![1.0f32; w * h];
-    let (max_x, max_y) = ((w - 1) as f32, (h - 1) as f32);
-    let mut px = [0.0f32; 4];
-    for y in 0..h {
-        for x in 0..w {
-            let (vx, vy) = flow.at(x, y);
-            let (sx, sy) = (x as f32 - vx, y as f32 - vy);
-            // Half a pixel of slack: a source on the border pixel's outer half is still inside.
-            let outside =
-                !(-0.5..=max_x + 0.5).contains(&sx) || !(-0.5..=max_y + 0.5).contains(&sy);
-            if edge == Edge::Clamp && outside {
-                inside[y * w + x] = 0.0;
-            }
-            sample_bicubic(frame, sx, sy, edge, &mut px);
-            image.pixel_mut(x, y).copy_from_slice(&px[..c]);
+    let mut warping = Warping::new(frame, flow)?;
+    warping.rows(frame, flow, edge, frame.height());
+    Ok(warping.finish())
+}
+
+/// A warp made a band of rows at a time (a large frame's warp is split over steps); the rows
+/// are the same whatever the bands.
+pub struct Warping {
+    warped: Warped,
+    next_row: usize,
+}
+
+impl Warping {
+    /// A warp of `frame` by `flow`, no row made yet; the sizes must match.
+    pub fn new(frame: &Image, flow: &FlowField) -> Result<Warping> {
+        let (w, h, c) = (frame.width(), frame.height(), frame.channels());
+        if (flow.width(), flow.height()) != (w, h) {
+            return Err(Error::InvalidSize {
+                what: "flow field",
+                width: flow.width(),
+                height: flow.height(),
+                reason: format!("must match the frame size {w}x{h}"),
+            });
         }
+        Ok(Warping {
+            warped: Warped {
+                image: Image::new(w, h, c)?,
+                inside: vec![1.0f32; w * h],
+            },
+            next_row: 0,
+        })
     }
-    Ok(Warped { image, inside })
+
+    /// Makes up to `count` more rows (of the same `frame` and `flow` as every call); returns
+    /// whether every row is made.
+    pub fn rows(&mut self, frame: &Image, flow: &FlowField, edge: Edge, count: usize) -> bool {
+        let (w, h, c) = (frame.width(), frame.height(), frame.channels());
+        let (max_x, max_y) = ((w - 1) as f32, (h - 1) as f32);
+        let mut px = [0.0f32; 4];
+        let end = (self.next_row + count).min(h);
+        let Warped { image, inside } = &mut self.warped;
+        for y in self.next_row..end {
+            for x in 0..w {
+                let (vx, vy) = flow.at(x, y);
+                let (sx, sy) = (x as f32 - vx, y as f32 - vy);
+                // Half a pixel of slack: a source on the border pixel's outer half is still
+                // inside.
+                let outside =
+                    !(-0.5..=max_x + 0.5).contains(&sx) || !(-0.5..=max_y + 0.5).contains(&sy);
+                if edge == Edge::Clamp && outside {
+                    inside[y * w + x] = 0.0;
+                }
+                sample_bicubic(frame, sx, sy, edge, &mut px);
+                image.pixel_mut(x, y).copy_from_slice(&px[..c]);
+            }
+        }
+        self.next_row = end;
+        self.done()
+    }
+
+    /// Whether every row is made.
+    #[must_use]
+    pub fn done(&self) -> bool {
+        self.next_row >= self.warped.image.height()
+    }
+
+    /// The warped frame (rows not made yet are black, and inside).
+    #[must_use]
+    pub fn finish(self) -> Warped {
+        self.warped
+    }
 }
 
 #[cfg(test)]
@@ -78,6 +121,23 @@ mod tests {
         let wrapped = warp(&frame, &flow, Edge::Wrap).unwrap();
         assert_eq!(wrapped.image.pixel(0, 7), frame.pixel(7, 1));
         assert!(wrapped.inside.iter().all(|&m| m == 1.0));
+    }
+
+    #[test]
+    fn a_warp_made_in_bands_equals_the_whole_warp() {
+        let frame = noise(13, 11, 3, 4);
+        let flow = FlowField::from_fn(13, 11, |x, y| (0.3 * x - 2.0, 1.7 - 0.2 * y)).unwrap();
+        let whole = warp(&frame, &flow, Edge::Clamp).unwrap();
+        let mut bands = Warping::new(&frame, &flow).unwrap();
+        let mut calls = 0;
+        while !bands.rows(&frame, &flow, Edge::Clamp, 4) {
+            calls += 1;
+        }
+        assert_eq!(calls, 2, "rows 0-3, 4-7, then 8-10");
+        let banded = bands.finish();
+        assert_eq!(banded.image, whole.image);
+        assert_eq!(banded.inside, whole.inside);
+        assert!(whole.inside.contains(&0.0) && whole.inside.contains(&1.0));
     }
 
     #[test]
