@@ -33,7 +33,7 @@ const METHODS = {
 };
 const FLOW_FRAMES = 4;
 /** The largest output each method runs at (above it, minutes per case on a 2-core machine). */
-const LARGEST = { optimization: 4096, graphcut: 4096, subpatch: 4096, features: 1024, flow: 1024 };
+const LARGEST = { optimization: 4096, graphcut: 4096, subpatch: 4096, features: 4096, flow: 4096 };
 
 /** Builds the exemplar of a case: tiles_128, or gravel at `side` pixels. */
 function exemplarOf(lib, side) {

@@ -116,6 +116,30 @@ pub struct Rect {
 }
 
 impl Rect {
+    /// The output pixels `patch` lands on, clipped to the output (the part past the border of
+    /// a wrapping output left out, as the feature cost leaves it).
+    fn of_patch(s: &Synthesis, patch: Patch) -> Rect {
+        let (pw, ph) = s.patch_extent(patch.source as usize);
+        let clip = |v: i64, size: usize| v.clamp(0, size as i64) as usize;
+        let (tx, ty) = (i64::from(patch.tx), i64::from(patch.ty));
+        Rect {
+            x0: clip(tx, s.canvas.width),
+            y0: clip(ty, s.canvas.height),
+            x1: clip(tx + pw as i64, s.canvas.width),
+            y1: clip(ty + ph as i64, s.canvas.height),
+        }
+    }
+
+    /// The smallest rectangle holding both.
+    fn union(self, other: Rect) -> Rect {
+        Rect {
+            x0: self.x0.min(other.x0),
+            y0: self.y0.min(other.y0),
+            x1: self.x1.max(other.x1),
+            y1: self.y1.max(other.y1),
+        }
+    }
+
     fn width(self) -> usize {
         self.x1 - self.x0
     }
@@ -251,31 +275,11 @@ pub fn choose(
     best.truncate(keep);
     // The context: the output's feature pixels on the frontier under any kept candidate, in
     // scan order (with their tangents), found within the candidates' bounds only.
-    let bounds = Rect {
-        x0: best.iter().map(|c| c.patch.tx.max(0)).min().unwrap_or(0) as usize,
-        y0: best.iter().map(|c| c.patch.ty.max(0)).min().unwrap_or(0) as usize,
-        x1: best
-            .iter()
-            .map(|c| {
-                (i64::from(c.patch.tx) + s.patch_extent(c.patch.source as usize).0 as i64)
-                    .clamp(0, w as i64)
-            })
-            .max()
-            .unwrap_or(0) as usize,
-        y1: best
-            .iter()
-            .map(|c| {
-                (i64::from(c.patch.ty) + s.patch_extent(c.patch.source as usize).1 as i64)
-                    .clamp(0, h as i64)
-            })
-            .max()
-            .unwrap_or(0) as usize,
-    };
-    let bounds = Rect {
-        x0: bounds.x0.min(bounds.x1),
-        y0: bounds.y0.min(bounds.y1),
-        ..bounds
-    };
+    let bounds = best
+        .iter()
+        .map(|c| Rect::of_patch(s, c.patch))
+        .reduce(Rect::union)
+        .expect("a candidate is kept");
     let near = frontier_in(s, band, bounds);
     let made_features: Vec<(usize, f32)> = bounds
         .pixels()
