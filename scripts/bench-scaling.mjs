@@ -4,8 +4,8 @@
 //                                  [--methods optimization,graphcut,subpatch,features,flow]
 //                                  [--svg www/scaling.svg] [--repeat 1]
 // Output sweep: the 128x128 www/samples/tiles_128.png to each square output size, up to each
-// method's LARGEST (4096 for texture optimisation and both graph-cut placements, 1024 for
-// feature-guided synthesis and flow: larger cases take minutes each). Exemplar sweep: gravel (the 512x512
+// method's LARGEST (4096 for every method since 2026-12-02: flow animation's 4096x4096 case takes
+// about 3 minutes, the whole run about 9). Exemplar sweep: gravel (the 512x512
 // ../shared/textures/gravel_full.png, shrunk with Exemplar.resized below 512 and mirror-tiled
 // above it) to a 256x256 output. Flow animation is timed per frame after the first (frames per
 // second over 4 frames); every other method runs to done. Prints two markdown tables (total
@@ -32,7 +32,7 @@ const METHODS = {
   flow: 'flow animation (per frame)',
 };
 const FLOW_FRAMES = 4;
-/** The largest output each method runs at (above it, minutes per case on a 2-core machine). */
+/** The largest output each method runs at (lower a method's to skip its slowest cases). */
 const LARGEST = { optimization: 4096, graphcut: 4096, subpatch: 4096, features: 4096, flow: 4096 };
 
 /** Builds the exemplar of a case: tiles_128, or gravel at `side` pixels. */
