@@ -67,7 +67,7 @@ export const EXPLANATIONS = {
     cite: [KWATRA_2005, 'section 4.1, equation (3), and section 4 (soft constraints, equation (2))', 'the paragraph "We perform synthesis in a frame-by-frame fashion..."'],
   },
   'fl-e-step': {
-    text: 'E-step of a flow frame: with the z_p fixed, each pixel becomes a weighted average of the matched neighbourhoods that overlap it and of the warped previous frame, weighted by λ (the flow energy (3), treated as the soft constraint of (2)). Compare "after the E-step" with the warped target beside it: the texture pulls one way, the flow the other.',
+    text: 'E-step of a flow frame: with the z_p fixed, each pixel becomes a weighted average of the matched neighbourhoods that overlap it and of the warped previous frame, weighted by λ (the flow energy (3), treated as the soft constraint of (2)). Compare "after the E-step" with the warped target beside it: the texture pulls one way, the flow the other. The last iteration at each neighbourhood size ends here: its M-step would only find matches for the next frame, which searches again from them anyway, so this library only measures them.',
     cite: [KWATRA_2005, 'section 4.1, equation (3), with section 4 (the E-step of soft-constrained synthesis)', 'the paragraphs "We perform synthesis in a frame-by-frame fashion..." and "In the E-step, we solve a new system of linear equations..."'],
   },
   'fl-m-step': {
