@@ -255,7 +255,9 @@ impl FlowAnimation {
     /// totalIterations, phase, progress }`; after a `frame` (or `done`) event, `renderInto`
     /// gives that frame. Frames larger than 256x512 split each iteration over steps of about
     /// 60 ms (kind 'part', with the `phase` it stopped in and the `progress` of the iteration,
-    /// 0 to 1), and setting up a frame is a step of its own; where they split changes nothing.
+    /// 0 to 1), and setting up a frame is a step or more of its own; where they split changes
+    /// nothing. A whole iteration reports phase 'm-step', or 'e-step' for a frame's last
+    /// iteration at a neighbourhood size (its M-step only measures the kept matches).
     pub fn step(&mut self) -> JsResult<JsValue> {
         Ok(event_object(&self.session.step()?))
     }

@@ -225,6 +225,30 @@ test('a photo used whole synthesises, and the quality line says why it is not me
   assert.match(quality, /^quality not measured: exemplar 4000x3000: measuring quality needs about 1\.\d GiB .*shrink or crop the exemplar first/);
   assert.equal(await page.getAttribute('#gc-quality', 'data-failed'), 'true');
   await page.screenshot({ path: `${RESULTS}/large-upload-photo-quality.png`, fullPage: true });
+
+  // Feature-guided synthesis: the photo's features are detected with the synthesis in the
+  // worker, not on the page (13.5 s there held the page from the panel's first draw on).
+  let started = Date.now();
+  await page.click('button[data-panel="features"]');
+  await page.evaluate(() => 1);
+  assert.ok(Date.now() - started < 3000, `the panel opened in ${Date.now() - started} ms`);
+  assert.equal(await page.getAttribute('#fg-exemplar-caption', 'data-detected-here'), 'false');
+  assert.match(await page.textContent('#fg-exemplar-caption'), /exemplar 4000×3000: its features are detected with the synthesis, off the page/);
+  await page.fill('#fg-patch', '32');
+  await page.click('#run');
+  // The page answers while the worker detects and synthesises.
+  for (let i = 0; i < 4; i++) {
+    started = Date.now();
+    await page.evaluate(() => 1);
+    assert.ok(Date.now() - started < 1000, `the page answered in ${Date.now() - started} ms`);
+    await page.waitForTimeout(500);
+  }
+  await page.waitForSelector('body[data-features-done="true"]', { timeout: 180_000 });
+  assert.ok(Number(await page.getAttribute('body', 'data-feature-patches')) >= 1);
+  assert.match(await page.textContent('#fg-quality'), /broken features not measured \(a photo-sized exemplar/);
+  assert.match(await page.textContent('#fg-graphcut-caption'), /broken features not measured/);
+  await page.screenshot({ path: `${RESULTS}/large-upload-photo-features.png`, fullPage: true });
+  await page.click('button[data-panel="graphcut"]');
   // Back to the state the next test starts from.
   await page.fill('#out-width', '256');
   await page.fill('#out-height', '256');

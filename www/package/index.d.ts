@@ -430,7 +430,7 @@ export interface FlowAnimationEvent {
   flowEnergy: number;
   changed: number;
   totalIterations: number;
-  /** The half of the iteration a 'part' step stopped in (a whole iteration: 'm-step'). */
+  /** The half of the iteration a 'part' step stopped in (a whole iteration: 'm-step'; 'e-step' for a later frame's last iteration at a size, whose M-step only measures). */
   phase: 'first-match' | 'e-step' | 'm-step';
   /** The share of the iteration done, 0 to 1 (1 for a whole iteration). */
   progress: number;

@@ -3,7 +3,8 @@
 // patch's context region, correspondences and warp grid, and plain graph-cut textures run on the
 // same exemplar and seed for comparison, with the broken-feature count of each.
 // Both syntheses run in the page's worker (www/lib/worker.js); the exemplar's map is detected and
-// edited here (one call on an exemplar-sized image) and sent along as a mask.
+// edited here (one call on an exemplar-sized image) and sent along as a mask, unless the exemplar
+// is a photo used whole (see PAGE_DETECT_PIXELS).
 import { detectFeatures, measureBrokenFeatures } from '../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../lib/canvas.js';
 import { showQualityOrWhy } from '../lib/quality.js';
@@ -13,6 +14,14 @@ import { remoteSession } from '../lib/worker.js';
 import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
 
 export const id = 'features';
+
+/**
+ * The largest exemplar (in pixels) whose feature map is detected on the page, where it can be
+ * seen and edited: detection took 13.5 s on the main thread for a 4000x3000 photo used whole (1.7 s
+ * at 1024x1024), holding the page. Larger exemplars are detected by the session in the worker,
+ * and the broken-feature counts, which detect the exemplar again, are not measured for them.
+ */
+const PAGE_DETECT_PIXELS = 512 * 512;
 export const title = 'Feature-guided';
 
 const WARP_TITLE = 'bend each patch so its features meet the placed ones (section 2.2)';
@@ -81,11 +90,23 @@ export function createPanel(ui) {
   }
 
   const detectOptions = () => ({ features: ui.$('fg-kind').value, threshold: Number(ui.$('fg-threshold').value) });
+  const detectsHere = () => ui.exemplar().width * ui.exemplar().height <= PAGE_DETECT_PIXELS;
 
   function detect() {
     map?.free();
-    map = detectFeatures(ui.exemplar(), detectOptions());
+    map = null;
     mapOf = ui.exemplar();
+    if (!detectsHere()) {
+      const { width, height } = ui.exemplar();
+      const canvas = ui.$('fg-exemplar');
+      drawInto(canvas, ui.exemplar());
+      const caption = ui.$('fg-exemplar-caption');
+      caption.textContent = `exemplar ${width}×${height}: its features are detected with the synthesis, ` +
+        'off the page; shrink or crop it to see and edit its map here';
+      caption.dataset.detectedHere = 'false';
+      return;
+    }
+    map = detectFeatures(ui.exemplar(), detectOptions());
     drawExemplarMap();
   }
 
@@ -97,6 +118,7 @@ export function createPanel(ui) {
     ctx.fillRect(0, 0, canvas.width, canvas.height);
     drawOverlay(canvas, map.width, map.height, (b) => map.renderInto(b));
     ui.$('fg-exemplar-caption').textContent = `exemplar features: ${map.count} pixels`;
+    ui.$('fg-exemplar-caption').dataset.detectedHere = 'true';
   }
 
   function paintAt(event) {
@@ -124,7 +146,8 @@ export function createPanel(ui) {
       placement: ui.$('fg-placement').value,
       patchSize: Number(ui.$('fg-patch').value),
       warp: ui.$('fg-warp').checked,
-      featureMask: map.toMask(),
+      // Without a map (a photo used whole) the session detects one with the same options.
+      ...(map ? { featureMask: map.toMask() } : {}),
       ...detectOptions(),
     };
   }
@@ -180,11 +203,17 @@ export function createPanel(ui) {
     ctx.drawImage(src, 0, 0, canvas.width, canvas.height);
   }
 
+  /** The session's broken-feature count, or null where it is not measured (see PAGE_DETECT_PIXELS). */
   function broken(session) {
+    if (!detectsHere()) return null;
     const rgba = new Uint8ClampedArray(session.width * session.height * 4);
     session.renderInto(rgba);
     return measureBrokenFeatures(ui.exemplar(), rgba, session.width, session.height, detectOptions());
   }
+
+  const brokenText = (b) => (b === null
+    ? 'not measured (a photo-sized exemplar: detecting its features again would hold the page; shrink or crop it)'
+    : b.toFixed(1));
 
   function resetSessions() {
     synthesis?.free();
@@ -244,7 +273,7 @@ export function createPanel(ui) {
       map = null;
     },
     async step() {
-      if (!map || mapOf !== ui.exemplar()) detect();
+      if (mapOf !== ui.exemplar()) detect();
       if (!synthesis) {
         synthesis = await made(() => remoteSession('FeatureSynthesis', [ui.exemplar(), options()], FEATURE_VIEWS));
         if (!synthesis) return null;
@@ -288,7 +317,7 @@ export function createPanel(ui) {
           quality.dataset.broken = String(b);
           const scored = synthesis;
           showQualityOrWhy(quality, ui.exemplar(), synthesis, () => synthesis === scored).then(() => {
-            quality.textContent += ` · broken features ${b.toFixed(1)}`;
+            quality.textContent += ` · broken features ${brokenText(b)}`;
             if (!ui.$('fg-compare').checked) document.body.dataset.featuresDone = 'true';
           });
         }
@@ -296,8 +325,9 @@ export function createPanel(ui) {
         drawInto(ui.$('fg-graphcut'), graphcut);
         if (event.done) {
           const b = broken(graphcut);
-          ui.$('fg-graphcut-caption').textContent = `plain graph cut, same exemplar and seed · broken features ${b.toFixed(1)}` +
-            ` (feature-guided: ${Number(ui.$('fg-quality').dataset.broken).toFixed(1)}; lower is better)`;
+          const theirs = ui.$('fg-quality').dataset.broken;
+          ui.$('fg-graphcut-caption').textContent = `plain graph cut, same exemplar and seed · broken features ${brokenText(b)}` +
+            (b === null ? '' : ` (feature-guided: ${brokenText(theirs === 'null' ? null : Number(theirs))}; lower is better)`);
           ui.$('fg-graphcut-caption').dataset.broken = String(b);
           document.body.dataset.featuresDone = 'true';
         }
