@@ -275,6 +275,10 @@ export function createPanel(ui) {
     async step() {
       if (mapOf !== ui.exemplar()) detect();
       if (!synthesis) {
+        // The constructor detects and indexes the exemplar's features: seconds for a photo.
+        const { width, height } = ui.exemplar();
+        ui.$('fg-readout').textContent = `setting up: the feature index of the ${width}×${height} exemplar` +
+          (detectsHere() ? '' : ' (its features are detected first: a photo-sized exemplar takes several seconds)');
         synthesis = await made(() => remoteSession('FeatureSynthesis', [ui.exemplar(), options()], FEATURE_VIEWS));
         if (!synthesis) return null;
         if (anatomyOn()) await synthesis.send('setAnatomy', true);
