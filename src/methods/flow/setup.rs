@@ -98,3 +98,36 @@ fn move_matches(solver: &mut LevelSolver, field: &FlowField, wrap: bool) {
         }
     });
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::testing::noise;
+    use crate::methods::flow::warp::warp;
+
+    /// Split into steps of one band each, the set-up makes the same warps as one whole warp.
+    #[test]
+    fn a_set_up_split_over_steps_warps_as_the_whole_warp_does() {
+        let (previous, naive) = (noise(300, 200, 3, 5), noise(300, 200, 3, 6));
+        let field = FlowField::from_fn(300, 200, |x, y| (0.01 * y - 1.0, 0.5 - 0.02 * x)).unwrap();
+        let mut setup = FrameSetup::new(field.clone(), &previous, &naive, false).unwrap();
+        let mut steps = 1;
+        while !setup.advance(&previous, &naive, &mut [], Some(0.0)) {
+            steps += 1;
+        }
+        // 109 rows of 300 pixels a band: two bands for each warp, a step each.
+        assert!(steps >= 4, "{steps} steps");
+        let start = setup.finish();
+        let whole = warp(&previous, &field, Edge::Clamp).unwrap();
+        assert_eq!(start.previous.image, whole.image);
+        assert_eq!(start.previous.inside, whole.inside);
+        assert!(whole.inside.contains(&0.0), "some sources lie outside");
+        assert_eq!(
+            start.naive,
+            warp(&naive, &field, Edge::Clamp).unwrap().image
+        );
+        // Unsplit, one call does it all.
+        let mut setup = FrameSetup::new(field, &previous, &naive, false).unwrap();
+        assert!(setup.advance(&previous, &naive, &mut [], None));
+    }
+}
