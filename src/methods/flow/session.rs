@@ -433,6 +433,7 @@ impl FlowSession {
     /// (and the naive baseline) along f_{t-1} and moves every level's matches along it; once
     /// done, sets the constraint. Returns whether it is done.
     fn begin_frame(&mut self) -> Result<bool> {
+        let started = crate::core::clock::now_ms();
         let previous = self.previous.as_ref().expect("a frame is finished");
         let naive = self.naive.as_ref().expect("frame 0 is the naive start");
         let setup = match &mut self.setup {
@@ -443,7 +444,12 @@ impl FlowSession {
                 self.setup.insert(setup)
             }
         };
-        if !setup.advance(previous, naive, &mut self.solvers, self.budget.split) {
+        // The field and the set-up's buffers count against the step's time too.
+        let left = self
+            .budget
+            .split
+            .map(|ms| (ms - (crate::core::clock::now_ms() - started)).max(0.0));
+        if !setup.advance(previous, naive, &mut self.solvers, left) {
             return Ok(false);
         }
         let start = self.setup.take().expect("set up above").finish();
