@@ -1,0 +1,67 @@
+//! Measuring kept matches without searching: the distances, IRLS weights and texture energy an
+//! M-step's end sets, for one distance per node. The constrained M-step measures its matches
+//! without the constraint this way, and a flow frame's last iteration at a size measures instead
+//! of searching.
+
+use super::{LevelSetup, LevelSolver};
+use crate::core::Image;
+use crate::methods::optimization::e_step::edge;
+use crate::methods::optimization::features::feature_map;
+use crate::methods::optimization::queries::GridQueries;
+use crate::solvers::nn::{FeatureMap, Queries, Query};
+
+impl LevelSolver {
+    /// Measures the kept matches against `output` without searching: their distances, IRLS
+    /// weights and texture energy, as the end of an M-step sets them, for one distance per node
+    /// (a search costs several). A flow frame's last iteration at a size ends with this: its
+    /// matches only carry into the next frame, whose first M-step searches from them anyway.
+    pub fn measure(&mut self, output: &Image) {
+        let LevelSetup { mu, wrap, .. } = self.setup;
+        // A measure replaces an M-step: one begun and not finished keeps its penalty.
+        if let Some(o) = self.running.take().and_then(|run| run.occurrence) {
+            self.occurrence_kept = Some(o);
+        }
+        let map = feature_map(output, mu, edge(wrap));
+        self.measure_distances(&map, true);
+        self.settle();
+    }
+
+    /// The distances of the kept matches to the neighbourhoods of `map` (the pixel term; with
+    /// `texture` false only the wavelet energy's pixel distances, the others being set).
+    pub(super) fn measure_distances(&mut self, map: &FeatureMap, texture: bool) {
+        let LevelSetup { wrap, size, .. } = self.setup;
+        let space = self.matcher.space();
+        let mut query = Query::new(space.vector_len());
+        let plain = || {
+            GridQueries::new(map, (&self.cols, &self.rows), size, wrap)
+                .transformed(self.wavelet.as_ref())
+        };
+        if texture {
+            let mut queries = plain();
+            for (n, d) in self.distances.iter_mut().enumerate() {
+                let m = self.matches[n];
+                *d = match queries.in_place(n) {
+                    Some(rows) => space.distance_in_place(rows, space.weights(), m, f32::INFINITY),
+                    None => {
+                        queries.fill(n, &mut query);
+                        query.distance(space, m, f32::INFINITY)
+                    }
+                };
+            }
+        }
+        if self.wavelet.is_some() {
+            // Parseval: the unweighted distance of transformed (windowed) vectors is the
+            // fall-off weighted pixel distance.
+            let mut queries = plain();
+            for (n, d) in self.pixel_distances.iter_mut().enumerate() {
+                queries.fill(n, &mut query);
+                *d = space.distance_with(
+                    &query.values,
+                    &self.unit_weights,
+                    self.matches[n],
+                    f32::INFINITY,
+                );
+            }
+        }
+    }
+}
