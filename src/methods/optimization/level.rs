@@ -306,10 +306,7 @@ impl LevelSolver {
     /// [`LevelSolver::resume_m_step`] runs it.
     pub fn begin_m_step(&mut self, output: &Image) {
         let LevelSetup { mu, wrap, .. } = self.setup;
-        // An M-step begun and not finished leaves its occurrence penalty for this one.
-        if let Some(o) = self.running.take().and_then(|run| run.occurrence) {
-            self.occurrence_kept = Some(o);
-        }
+        self.abandon_m_step();
         let occurrence = self.occurrence();
         self.running = Some(MStepRun {
             map: feature_map(output, mu, edge(wrap)),
@@ -318,6 +315,13 @@ impl LevelSolver {
             terms: None,
             constrained: None,
         });
+    }
+
+    /// Drops an M-step begun and not finished; its occurrence penalty is kept for the next.
+    fn abandon_m_step(&mut self) {
+        if let Some(o) = self.running.take().and_then(|run| run.occurrence) {
+            self.occurrence_kept = Some(o);
+        }
     }
 
     /// Whether an E-step is begun and not finished.

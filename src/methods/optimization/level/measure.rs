@@ -17,10 +17,8 @@ impl LevelSolver {
     /// matches only carry into the next frame, whose first M-step searches from them anyway.
     pub fn measure(&mut self, output: &Image) {
         let LevelSetup { mu, wrap, .. } = self.setup;
-        // A measure replaces an M-step: one begun and not finished keeps its penalty.
-        if let Some(o) = self.running.take().and_then(|run| run.occurrence) {
-            self.occurrence_kept = Some(o);
-        }
+        // A measure replaces an M-step.
+        self.abandon_m_step();
         let map = feature_map(output, mu, edge(wrap));
         self.measure_distances(&map, true);
         self.settle();
