@@ -63,3 +63,30 @@ test('an uploaded valid image replaces the exemplar and clears the error', async
   await page.screenshot({ path: `${RESULTS}/page.png`, fullPage: true });
   assert.deepEqual(errors, []);
 });
+
+// A panel that loads its input (the video demo clip, the merge's second image) may be left before
+// the load ends; its elements are gone by then. A CI run failed on this race.
+for (const { panel, url } of [
+  { panel: 'video', url: '**/samples/clips/water.png' },
+  { panel: 'merge', url: '**/samples/sand_128.png' },
+]) {
+  test(`leaving the ${panel} panel while its input loads raises no error`, async () => {
+    const { page, errors } = demo;
+    let release;
+    const held = new Promise((resolve) => { release = resolve; });
+    let requested = false;
+    await page.route(url, async (route) => {
+      requested = true;
+      await held;
+      await route.continue();
+    });
+    await page.click(`#tab-${panel}`);
+    await page.click('#tab-optimization');
+    release();
+    // The held load now ends with the optimization panel showing; give its continuation time.
+    await page.waitForTimeout(500);
+    await page.unroute(url);
+    assert.ok(requested, `the ${panel} panel asked for ${url}`);
+    assert.deepEqual(errors, []);
+  });
+}

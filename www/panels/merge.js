@@ -25,6 +25,7 @@ export function createPanel(ui) {
   let mask = null;
   let layout = null;
   let painting = false;
+  let mounted = true;
   const anatomyOn = () => ui.$('mg-anatomy-on')?.checked ?? false;
 
   function optionsHtml() {
@@ -154,10 +155,12 @@ export function createPanel(ui) {
       ui.$('mg-clear').addEventListener('click', () => { mask?.fill(0); drop(); draw(); });
       // The graph is recorded from the merge's first step: toggling it starts the merge over.
       ui.$('mg-anatomy-on').addEventListener('change', () => this.reset());
-      ui.$('mg-second').addEventListener('change', async () => { await loadSecond(); layout = null; this.reset(); });
-      loadSecond().then(() => this.reset());
+      ui.$('mg-second').addEventListener('change', async () => { await loadSecond(); layout = null; if (mounted) this.reset(); });
+      // The fetch may end after the panel was left, when its elements are gone.
+      loadSecond().then(() => mounted && this.reset());
     },
     unmount() {
+      mounted = false;
       const canvas = ui.outputCanvas;
       canvas.onpointerdown = canvas.onpointermove = null;
       window.removeEventListener('pointerup', this.onPointerUp);

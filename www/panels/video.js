@@ -124,6 +124,7 @@ export function createPanel(ui) {
   /** The clip at the chosen size, decoded once per source and size. A decode that another
    * request has superseded (the size changed while a video was decoding) is dropped. */
   let loading = null;
+  let mounted = true;
   async function loadClip() {
     const files = ui.$('vt-file').files;
     const fromFile = ui.$('vt-source').value === 'file' && files.length > 0;
@@ -137,7 +138,8 @@ export function createPanel(ui) {
     clip = loaded;
     clipKey = key;
     inputFrames = framesOf(clip);
-    ui.$('vt-input-caption').textContent = `input clip: ${clip.width}×${clip.height}, ${clip.frames} frames`;
+    // The decode may end after the panel was left: its elements are gone then.
+    if (mounted) ui.$('vt-input-caption').textContent = `input clip: ${clip.width}×${clip.height}, ${clip.frames} frames`;
     return clip;
   }
 
@@ -150,10 +152,10 @@ export function createPanel(ui) {
       loaded = await clipFromVideo(files[0], {
         width: s, height: s, frames: frameCount(),
         onProgress: (t, n) => {
-          if (loading?.key === key) ui.$('vt-readout').textContent = `decoding frame ${t}/${n}…`;
+          if (mounted && loading?.key === key) ui.$('vt-readout').textContent = `decoding frame ${t}/${n}…`;
         },
       });
-      if (loading?.key === key) ui.$('vt-readout').textContent = `decoded ${loaded.frames} frames: press Run or Step`;
+      if (mounted && loading?.key === key) ui.$('vt-readout').textContent = `decoded ${loaded.frames} frames: press Run or Step`;
     } else {
       loaded = await clipFromImages(files, { width: s, height: s });
     }
@@ -305,6 +307,7 @@ export function createPanel(ui) {
       startPlayback();
     },
     unmount() {
+      mounted = false;
       clearInterval(playTimer);
       playTimer = null;
     },
@@ -357,7 +360,7 @@ export function createPanel(ui) {
       }
       const ctx = ui.outputCanvas.getContext('2d');
       ctx.clearRect(0, 0, ui.outputCanvas.width, ui.outputCanvas.height);
-      loadClip().catch((error) => { ui.$('vt-readout').textContent = error.message; });
+      loadClip().catch((error) => { if (mounted) ui.$('vt-readout').textContent = error.message; });
     },
   };
 }
