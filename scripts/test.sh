@@ -24,6 +24,9 @@ stage() { # name, command...
 
 stage native cargo test --tests --lib
 stage build ./scripts/build.sh
+# The runner gives chromedriver 5 s to start by default: on a loaded 2-core machine it once took
+# longer ("driver failed to bind port during startup"), failing the stage before any test ran.
+export WASM_BINDGEN_TEST_DRIVER_TIMEOUT=${WASM_BINDGEN_TEST_DRIVER_TIMEOUT:-30}
 stage wasm cargo test --target wasm32-unknown-unknown --tests
 # The package in Node: the bad-input corpus, the leak test, determinism (tests/node/).
 stage node node --test --test-concurrency=1 tests/node/
