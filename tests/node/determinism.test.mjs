@@ -2,10 +2,8 @@
 // runs, between the native build and the wasm package, and whatever the size of the Worker pool.
 //
 // Native and wasm agree because every transcendental function goes through src/core/math.rs (the
-// `libm` crate on both; glibc's expf/powf round differently from wasm's in ~10% of cases). One
-// call outside it remains, in the texture-optimisation IRLS weight (methods/optimization/
-// e_step.rs, `powf(r - 2)`); at 48x48 it changes no pixel of these cases, at 128x128 it changes
-// some (see the reliability notes in the README).
+// `libm` crate on both; glibc's expf/powf round differently from wasm's in ~10% of cases), and
+// the texture-optimisation IRLS weight through src/core/power.rs (plain arithmetic).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';

@@ -208,7 +208,10 @@ fn events_count_frames_and_iterations_and_end_with_done() {
 #[test]
 fn a_whole_pixel_translation_with_a_strong_constraint_shifts_the_frame() {
     // Tileable frames and a one-pixel translation: the warped frame is an exact shift, and a
-    // large lambda keeps it.
+    // large lambda keeps it. Histogram matching is off: after each E-step it moves every pixel,
+    // the constrained ones too, towards the exemplar's histogram, by up to 0.01-0.02 on these
+    // 1,024 pixels (how far depends on the first frame's content), which is not what this
+    // test is about.
     let exemplar = sample("grass_64");
     let flow = FlowSource::Fields(vec![FlowField::from_fn(32, 32, |_, _| (1.0, 0.0)).unwrap()]);
     let opts = FlowOptions {
@@ -217,6 +220,7 @@ fn a_whole_pixel_translation_with_a_strong_constraint_shifts_the_frame() {
         frames: 2,
         lambda: 1000.0,
         tileable: true,
+        histogram_matching: 0.0,
         ..FlowOptions::default()
     };
     let (frames, naive, _) = animate(&exemplar, flow, opts);
@@ -232,7 +236,7 @@ fn a_whole_pixel_translation_with_a_strong_constraint_shifts_the_frame() {
             assert_eq!(naive.pixel(x, y), b);
         }
     }
-    assert!(worst < 0.01, "largest difference from the shift {worst}");
+    assert!(worst < 1e-3, "largest difference from the shift {worst}");
 }
 
 /// How far (in half pixels, 0 to 16) `frame` lies to the right of `first`: the shift of `first`

@@ -383,7 +383,11 @@ pub fn robust_weight(squared_distance: f32, r: f32) -> f32 {
     if r == 2.0 {
         return 1.0;
     }
-    crate::core::math::powf(squared_distance.sqrt().max(MIN_DISTANCE), r - 2.0)
+    // ||d||^(r - 2) = (d^2)^((r - 2) / 2), the floor applied to the square.
+    crate::core::power::pow_positive(
+        squared_distance.max(MIN_DISTANCE * MIN_DISTANCE),
+        0.5 * (r - 2.0),
+    )
 }
 
 /// The IRLS weight of every squared distance (1 where it is infinite: before the first
