@@ -14,6 +14,7 @@ import { remoteSession } from '../lib/worker.js';
 import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
 
 export const id = 'features';
+export const title = 'Feature-guided';
 
 /**
  * The largest exemplar (in pixels) whose feature map is detected on the page, where it can be
@@ -22,7 +23,6 @@ export const id = 'features';
  * and the broken-feature counts, which detect the exemplar again, are not measured for them.
  */
 const PAGE_DETECT_PIXELS = 512 * 512;
-export const title = 'Feature-guided';
 
 const WARP_TITLE = 'bend each patch so its features meet the placed ones (section 2.2)';
 const ANATOMY_TITLE = 'graph-cut placement: each placement\'s colour-cost surface, the probabilities it was drawn by (colour plus feature cost) and its seam graph';
