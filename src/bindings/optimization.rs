@@ -26,6 +26,7 @@ const KNOWN: &[&str] = &[
     "iterations",
     "r",
     "mu",
+    "mStepMu",
     "search",
     "tileable",
     "completeness",
@@ -79,6 +80,7 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
             .map_or(d.iterations, |v| v as usize),
         r: js.number("r")?.map_or(d.r, |v| v as f32),
         mu: js.number("mu")?.map_or(d.mu, |v| v as f32),
+        m_step_mu: js.number("mStepMu")?.map(|v| v as f32),
         search,
         tileable: js.boolean("tileable")?.unwrap_or(d.tileable),
         completeness: js
@@ -135,7 +137,8 @@ pub struct TextureOptimization {
 impl TextureOptimization {
     /// Plans the schedule for `exemplar` and `options` (all optional): `outputWidth`,
     /// `outputHeight` (256), `seed` (1), `levels` (3), `neighbourhoodSizes` ([32, 16, 8]),
-    /// `iterations` per level (5), `r` (0.8), `mu` (0), `search` ('patchmatch' | 'kmeans-tree' |
+    /// `iterations` per level (5), `r` (0.8), `mu` (0), `mStepMu` (the M-step's own gradient
+    /// weight; default `mu`), `search` ('patchmatch' | 'kmeans-tree' |
     /// 'exact'), `tileable` (false), `completeness` (1), `histogramMatching` (1), `energy`
     /// ('pixels' | 'haar' | 'daubechies', default 'pixels': the wavelet texture energy of Shen
     /// et al. 2009), `waveletDetailWeight` (weight of the wavelet detail bands, default 4).

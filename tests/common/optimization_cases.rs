@@ -119,6 +119,37 @@ fn bad_options_are_errors_that_name_them() {
 }
 
 #[wasm_bindgen_test]
+fn the_m_steps_own_gradient_weight_runs_from_js_and_bad_values_are_named() {
+    let ex = Exemplar::from_bytes(GRAVEL_64).unwrap();
+    let opts = options(&[
+        ("outputWidth", 32.into()),
+        ("outputHeight", 32.into()),
+        ("iterations", 2.into()),
+        ("neighbourhoodSizes", Array::of1(&8.into()).into()),
+        ("mu", 10.into()),
+        ("mStepMu", 1.into()),
+    ]);
+    let mut session = TextureOptimization::new(&ex, opts).unwrap();
+    let mut steps = 0;
+    while !session.done() {
+        let event = session.step().unwrap();
+        assert!(get(&event, "energy").as_f64().unwrap().is_finite());
+        steps += 1;
+        assert!(steps < 100, "the session finishes");
+    }
+    let msg = |value: JsValue| {
+        error_message(TextureOptimization::new(
+            &ex,
+            options(&[("mStepMu", value)]),
+        ))
+    };
+    for bad in [(-1).into(), f64::NAN.into(), 1e4.into(), "big".into()] {
+        let m = msg(bad);
+        assert!(m.contains("invalid mStepMu"), "{m}");
+    }
+}
+
+#[wasm_bindgen_test]
 fn wavelet_energies_run_from_js_and_bad_values_are_named() {
     let ex = Exemplar::from_bytes(GRAVEL_64).unwrap();
     for energy in ["haar", "daubechies"] {

@@ -81,6 +81,15 @@ test('reset clears the run and a bad option shows an error', async () => {
   await page.click('#step');
   await page.waitForSelector('#error:not([hidden])');
   assert.match(await page.textContent('#error'), /invalid r: must be in \(0, 2\], got 5/);
+  // The M-step's own gradient weight reaches the session: out of range, it names itself.
+  await page.fill('#to-r', '0.8');
+  await page.dispatchEvent('#to-r', 'change');
+  await page.fill('#to-m-step-mu', '-1');
+  await page.dispatchEvent('#to-m-step-mu', 'change');
+  await page.click('#step');
+  await page.waitForFunction(() => /invalid mStepMu/.test(document.getElementById('error').textContent));
+  await page.fill('#to-m-step-mu', '');
+  await page.dispatchEvent('#to-m-step-mu', 'change');
 });
 
 test('a large output splits iterations into parts the readout names', async () => {

@@ -46,7 +46,7 @@ export const SESSIONS = {
     make: (o, input = ex()) => new api.TextureOptimization(input, over({ outputWidth: 24, outputHeight: 24, neighbourhoodSizes: [8, 4], iterations: 2 }, o)),
     options: {
       outputWidth: SIZE, outputHeight: SIZE, seed: SEED, levels: COUNT, neighbourhoodSizes: COUNTS,
-      iterations: COUNT, r: REAL, mu: REAL, search: enumOf('patchmatch', 'kmeans-tree', 'exact'),
+      iterations: COUNT, r: REAL, mu: REAL, mStepMu: REAL, search: enumOf('patchmatch', 'kmeans-tree', 'exact'),
       tileable: BOOL, completeness: REAL, histogramMatching: REAL,
       energy: enumOf('pixels', 'haar', 'daubechies'), waveletDetailWeight: REAL, memoryBudgetMiB: BUDGET,
     },

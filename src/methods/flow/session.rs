@@ -161,6 +161,7 @@ impl FlowSession {
                     search: options.search,
                     r: options.r,
                     mu: 0.0,
+                    search_mu: 0.0,
                     wrap: options.tileable,
                     passes: FRAME_PATCHMATCH_PASSES,
                     completeness: 0.0,

@@ -37,6 +37,9 @@ pub struct LevelSetup {
     pub r: f32,
     /// Weight of the gradient energy.
     pub mu: f32,
+    /// Weight of the gradient term in the M-step's distance (`mu` unless the options say
+    /// otherwise).
+    pub search_mu: f32,
     /// Neighbourhoods wrap around the output's borders.
     pub wrap: bool,
     /// PatchMatch sweeps per M-step.
@@ -71,6 +74,7 @@ impl LevelSetup {
             search: Search::PatchMatch,
             r: 0.8,
             mu: 0.0,
+            search_mu: 0.0,
             wrap: false,
             passes: 3,
             completeness: 0.0,
@@ -163,7 +167,7 @@ impl LevelSolver {
     }
 
     fn build(exemplar: &Image, setup: LevelSetup, sub_pixel: bool, rng: &mut Rng) -> Self {
-        let map = feature_map(exemplar, setup.mu, Edge::Clamp);
+        let map = feature_map(exemplar, setup.search_mu, Edge::Clamp);
         let wavelet = setup.energy.wavelet().map(|w| {
             WaveletEnergy::new(
                 w,
@@ -181,7 +185,7 @@ impl LevelSolver {
             None if sub_pixel => {
                 let (copies, image) = phases::stacked_exemplar(exemplar);
                 stacked = Some(image);
-                Neighbourhoods::stacked(&phases::copy_maps(&copies, setup.mu), setup.size)
+                Neighbourhoods::stacked(&phases::copy_maps(&copies, setup.search_mu), setup.size)
             }
             None => Neighbourhoods::new(map, setup.size),
             Some(e) => {
@@ -305,11 +309,13 @@ impl LevelSolver {
     /// Starts an M-step on `output` (its feature map and occurrence penalty are fixed now);
     /// [`LevelSolver::resume_m_step`] runs it.
     pub fn begin_m_step(&mut self, output: &Image) {
-        let LevelSetup { mu, wrap, .. } = self.setup;
+        let LevelSetup {
+            search_mu, wrap, ..
+        } = self.setup;
         self.abandon_m_step();
         let occurrence = self.occurrence();
         self.running = Some(MStepRun {
-            map: feature_map(output, mu, edge(wrap)),
+            map: feature_map(output, search_mu, edge(wrap)),
             occurrence,
             progress: self.matcher.progress(self.matches.len()),
             terms: None,

@@ -36,7 +36,9 @@ pub fn working_set(
     let (w, h) = (options.output_width, options.output_height);
     let n = w as u64 * h as u64;
     let c64 = c as u64;
-    let gradient = options.mu > 0.0;
+    // The feature maps carry gradients when either step uses them (the E-step's `mu`, the
+    // M-step's `m_step_mu`).
+    let gradient = options.mu > 0.0 || options.m_step_mu.is_some_and(|m| m > 0.0);
     let d = if gradient { 3 * c64 } else { c64 };
     let finest = levels.iter().filter(|l| l.octave == 0);
     let nodes = finest
@@ -65,7 +67,7 @@ pub fn working_set(
         .with("exemplar pyramid", image_bytes(ew, eh, c) * 2)
         .with("exemplar neighbourhoods", space)
         .with("grid nodes", nodes * 32);
-    if gradient {
+    if options.mu > 0.0 {
         set.add("gradient solve", n * (8 * (1 + c64) + 36));
     }
     if constraints {

@@ -29,6 +29,14 @@ pub struct Options {
     /// Weight of the gradient energy mu ||Dx_p - Dz_p||^2; 0 turns it off. Default: 0 (the paper
     /// uses 10 when it is on).
     pub mu: f32,
+    /// Weight of the gradient term in the M-step's distance alone, where it should differ from
+    /// `mu` (not in the paper, whose EM minimises one energy in both steps; `None`, the
+    /// default, is that). At mu = 10 the search matches by gradient almost alone (each of a
+    /// pixel's six gradient values weighs ten times each of its three colour values), so
+    /// neighbouring matches agree on edges and not on colour and the output drifts into colour
+    /// blotches (carpet_64, paving_128); 1 keeps the E-step's gradient energy with a search
+    /// that sees colour (see the README).
+    pub m_step_mu: Option<f32>,
     /// Nearest-neighbourhood search of the M-step. Default: PatchMatch, the fastest of the three
     /// and within 2% of the exact search's final energy on the samples (see the benchmark).
     pub search: Search,
@@ -70,6 +78,7 @@ impl Default for Options {
             iterations: 5,
             r: 0.8,
             mu: 0.0,
+            m_step_mu: None,
             search: Search::PatchMatch,
             tileable: false,
             completeness: DEFAULT_COMPLETENESS,
@@ -155,6 +164,11 @@ impl Options {
         if !self.mu.is_finite() || self.mu < 0.0 || self.mu > 1000.0 {
             return invalid("mu", format!("must be between 0 and 1000, got {}", self.mu));
         }
+        if let Some(m) = self.m_step_mu
+            && (!m.is_finite() || !(0.0..=1000.0).contains(&m))
+        {
+            return invalid("mStepMu", format!("must be between 0 and 1000, got {m}"));
+        }
         let w = self.wavelet_detail_weight;
         if !w.is_finite() || !(0.0..=1000.0).contains(&w) {
             return invalid(
@@ -224,6 +238,13 @@ mod tests {
         assert!(message(Options { r: f32::NAN, ..d() }).contains("invalid r"));
         assert!(message(Options { r: 3.0, ..d() }).contains("invalid r"));
         assert!(message(Options { mu: -1.0, ..d() }).contains("invalid mu"));
+        for bad in [-1.0, f32::NAN, 1e4] {
+            let m = message(Options {
+                m_step_mu: Some(bad),
+                ..d()
+            });
+            assert!(m.contains("mStepMu"), "{m}");
+        }
         assert!(
             message(Options {
                 histogram_matching: f32::NAN,

@@ -609,3 +609,66 @@ fn energy_and_weights_from_one_pass_equal_the_direct_formulas() {
         }
     }
 }
+
+#[test]
+fn the_m_steps_own_gradient_weight_changes_the_search_alone() {
+    use super::level::{LevelSetup, LevelSolver};
+    use crate::core::Rng;
+    use crate::core::testing::noise;
+    use crate::solvers::nn::patches::gaussian_falloff;
+    let exemplar = sample("carpet_64");
+    let output = noise(40, 40, 3, 4);
+    let size = 8;
+    let solver = |search_mu: f32| {
+        let mut s = LevelSolver::new(
+            &exemplar,
+            LevelSetup {
+                mu: 10.0,
+                search_mu,
+                ..LevelSetup::plain(40, 40, size)
+            },
+            &mut Rng::new(3),
+        );
+        s.m_step(&output, None, &mut Rng::new(5));
+        s
+    };
+    // With the paper's weight the search sees colour and both gradients; with 0, colour alone,
+    // and each node's reported distance is then the direct fall-off-weighted colour SSD
+    // between its output neighbourhood and its match.
+    assert_eq!(solver(10.0).vector_len(), size * size * 9);
+    let colour = solver(0.0);
+    assert_eq!(colour.vector_len(), size * size * 3);
+    let g = gaussian_falloff(size, 3);
+    let (cols, rows) = colour.grid();
+    for (n, (&m, &d)) in colour.matches().iter().zip(colour.distances()).enumerate() {
+        let (x0, y0) = (cols[n % cols.len()], rows[n / cols.len()]);
+        let mut direct = 0.0f64;
+        for dy in 0..size {
+            for dx in 0..size {
+                let (o, e) = (
+                    output.pixel(x0 + dx, y0 + dy),
+                    exemplar.pixel(m.x as usize + dx, m.y as usize + dy),
+                );
+                for k in 0..3 {
+                    let w = f64::from(g[(dy * size + dx) * 3 + k]);
+                    direct += w * f64::from(o[k] - e[k]).powi(2);
+                }
+            }
+        }
+        assert!(
+            (f64::from(d) - direct).abs() <= 1e-4 * direct.max(1e-3),
+            "node {n}: {d} vs {direct}"
+        );
+    }
+    // The session passes the option to every level, and leaving it out is the paper's EM.
+    let options = |m_step_mu| Options {
+        mu: 10.0,
+        m_step_mu,
+        ..small(Search::PatchMatch)
+    };
+    let (paper, _) = run(&exemplar, options(None));
+    let (same, _) = run(&exemplar, options(Some(10.0)));
+    let (colour_search, _) = run(&exemplar, options(Some(1.0)));
+    assert_eq!(paper.output(), same.output());
+    assert_ne!(paper.output(), colour_search.output());
+}

@@ -16,10 +16,12 @@ impl LevelSolver {
     /// (a search costs several). A flow frame's last iteration at a size ends with this: its
     /// matches only carry into the next frame, whose first M-step searches from them anyway.
     pub fn measure(&mut self, output: &Image) {
-        let LevelSetup { mu, wrap, .. } = self.setup;
+        let LevelSetup {
+            search_mu, wrap, ..
+        } = self.setup;
         // A measure replaces an M-step.
         self.abandon_m_step();
-        let map = feature_map(output, mu, edge(wrap));
+        let map = feature_map(output, search_mu, edge(wrap));
         self.measure_distances(&map, true);
         self.settle();
     }
