@@ -99,6 +99,11 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                 iterations: count(u, 3, v)?,
                 r: real(u, 0.8, v)?,
                 mu: real(u, 1.0, v)?,
+                m_step_mu: if u.arbitrary()? {
+                    Some(real(u, 1.0, v)?)
+                } else {
+                    None
+                },
                 search: search(u)?,
                 tileable: u.arbitrary()?,
                 completeness: real(u, 1.0, v)?,
