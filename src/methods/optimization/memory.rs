@@ -1,7 +1,7 @@
 //! The working set of a texture optimisation (see [`crate::core::budget`]), counted from what the
 //! session allocates. The finest level is the peak: every buffer below scales with its output
-//! (`N` pixels, `c` channels, `d` feature values per pixel: `c`, or `3c` with the gradient
-//! energy), and a level's buffers are dropped when the next level is entered.
+//! (`N` pixels, `c` channels, `d` feature values per pixel: `c`, or `3c` when the M-step's distance
+//! has a gradient term), and a level's buffers are dropped when the next level is entered.
 //!
 //! - the output, `4c N`, while the previous level's output is resized into it (`c N` more) and
 //!   a full-size copy for reading it back (`4c N`);
@@ -36,10 +36,12 @@ pub fn working_set(
     let (w, h) = (options.output_width, options.output_height);
     let n = w as u64 * h as u64;
     let c64 = c as u64;
-    // The feature maps carry gradients when either step uses them (the E-step's `mu`, the
-    // M-step's `m_step_mu`).
-    let gradient = options.mu > 0.0 || options.m_step_mu.is_some_and(|m| m > 0.0);
-    let d = if gradient { 3 * c64 } else { c64 };
+    // The M-step's feature maps carry gradients when its own weight is above 0.
+    let d = if options.search_mu() > 0.0 {
+        3 * c64
+    } else {
+        c64
+    };
     let finest = levels.iter().filter(|l| l.octave == 0);
     let nodes = finest
         .clone()

@@ -102,6 +102,12 @@ pub const MIN_EXEMPLAR_SIDE: usize = 16;
 pub const MAX_ITERATIONS: usize = 100;
 
 impl Options {
+    /// The gradient weight of the M-step's distance: `m_step_mu` where set, else `mu`.
+    #[must_use]
+    pub fn search_mu(&self) -> f32 {
+        self.m_step_mu.unwrap_or(self.mu)
+    }
+
     /// Checks every option on its own and against the exemplar size; the error names the option.
     pub fn validate(&self, exemplar_width: usize, exemplar_height: usize) -> Result<()> {
         let invalid =

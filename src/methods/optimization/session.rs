@@ -408,7 +408,7 @@ impl Session {
             search: self.options.search,
             r: self.options.r,
             mu: self.options.mu,
-            search_mu: self.options.m_step_mu.unwrap_or(self.options.mu),
+            search_mu: self.options.search_mu(),
             wrap: self.options.tileable,
             passes: PATCHMATCH_PASSES,
             completeness: self.options.completeness,
