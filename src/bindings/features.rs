@@ -12,7 +12,7 @@ use super::options::{OptionsReader, object};
 use super::pixels::{render_into, write_rgba};
 use crate::core::{Error, from_rgba8};
 use crate::methods::design::Deformation;
-use crate::methods::features::broken::broken_features;
+use crate::methods::features::broken::{BrokenBaseline, broken_features};
 use crate::methods::features::{
     DetectOptions, FeatureKind, FeatureMap as Map, FeatureOptions, FeaturePlacement,
     FeatureSynthesis as Synthesis, WarpKind, detect,
@@ -53,6 +53,39 @@ fn read_detect(js: &OptionsReader) -> JsResult<DetectOptions> {
 #[wasm_bindgen]
 pub struct FeatureMap {
     map: Map,
+    /// The exemplar's map as detected, for `brokenFeatures` (edits do not move it).
+    baseline: BrokenBaseline,
+}
+
+impl FeatureMap {
+    fn detect(exemplar: &Exemplar, options: &JsValue) -> JsResult<FeatureMap> {
+        let js = OptionsReader::new(options, &["features", "threshold", "alpha"])?;
+        let options = read_detect(&js)?;
+        let map = detect(exemplar.image(), options)?;
+        Ok(FeatureMap {
+            baseline: BrokenBaseline::of(&map, options),
+            map,
+        })
+    }
+}
+
+fn check_finite(values: &[(&'static str, f32)]) -> JsResult<()> {
+    for &(name, v) in values {
+        if !v.is_finite() {
+            return Err(invalid(name, format!("must be a finite number, got {v}")));
+        }
+    }
+    Ok(())
+}
+
+fn check_radius(radius: f32) -> JsResult<()> {
+    if !(0.0..=64.0).contains(&radius) {
+        return Err(invalid(
+            "radius",
+            format!("must be between 0 and 64, got {radius}"),
+        ));
+    }
+    Ok(())
 }
 
 /// Detects the feature map of an exemplar: `detectFeatures(exemplar, { features: 'ridges' |
@@ -60,14 +93,19 @@ pub struct FeatureMap {
 /// which a pixel is a strong feature).
 #[wasm_bindgen(js_name = detectFeatures)]
 pub fn detect_features(exemplar: &Exemplar, options: JsValue) -> JsResult<FeatureMap> {
-    let js = OptionsReader::new(&options, &["features", "threshold", "alpha"])?;
-    Ok(FeatureMap {
-        map: detect(exemplar.image(), read_detect(&js)?)?,
-    })
+    FeatureMap::detect(exemplar, &options)
 }
 
 #[wasm_bindgen]
 impl FeatureMap {
+    /// The same as `detectFeatures(exemplar, options)`, as a constructor, so that a worker can
+    /// make one (the package's worker makes any exported class): a photo's map detected and
+    /// edited there, off the page's thread.
+    #[wasm_bindgen(constructor)]
+    pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<FeatureMap> {
+        FeatureMap::detect(exemplar, &options)
+    }
+
     #[wasm_bindgen(getter)]
     pub fn width(&self) -> u32 {
         self.map.width as u32
@@ -86,19 +124,54 @@ impl FeatureMap {
 
     /// Paints (`on` true) or erases a disc of `radius` pixels at (x, y).
     pub fn paint(&mut self, x: f32, y: f32, radius: f32, on: bool) -> JsResult<()> {
-        for (name, v) in [("x", x), ("y", y), ("radius", radius)] {
-            if !v.is_finite() {
-                return Err(invalid(name, format!("must be a finite number, got {v}")));
-            }
-        }
-        if !(0.0..=64.0).contains(&radius) {
-            return Err(invalid(
-                "radius",
-                format!("must be between 0 and 64, got {radius}"),
-            ));
-        }
+        check_finite(&[("x", x), ("y", y), ("radius", radius)])?;
+        check_radius(radius)?;
         self.map.paint(x, y, radius, on);
         Ok(())
+    }
+
+    /// Paints (`on` true) or erases the stroke from (x0, y0) to (x1, y1) with a disc of `radius`
+    /// pixels: a brush's move, without gaps however far apart the pointer reported it (the part
+    /// off the map is left out).
+    #[wasm_bindgen(js_name = paintLine)]
+    pub fn paint_line(
+        &mut self,
+        x0: f32,
+        y0: f32,
+        x1: f32,
+        y1: f32,
+        radius: f32,
+        on: bool,
+    ) -> JsResult<()> {
+        check_finite(&[
+            ("x0", x0),
+            ("y0", y0),
+            ("x1", x1),
+            ("y1", y1),
+            ("radius", radius),
+        ])?;
+        check_radius(radius)?;
+        // Ends further off are a caller's mistake (and would lose the stroke's precision).
+        for (name, v) in [("x0", x0), ("y0", y0), ("x1", x1), ("y1", y1)] {
+            if v.abs() > 1e9 {
+                return Err(invalid(
+                    name,
+                    format!("must be within 1e9 pixels of the map, got {v}"),
+                ));
+            }
+        }
+        self.map.paint_line((x0, y0), (x1, y1), radius, on);
+        Ok(())
+    }
+
+    /// The broken-feature count of an RGBA output against this map's exemplar, as
+    /// `measureBrokenFeatures(exemplar, rgba, width, height, options)` gives it with the options
+    /// this map was detected with, without detecting the exemplar again (seconds for a photo).
+    /// Edits to the map do not change it: outputs are scored against the exemplar as detected.
+    #[wasm_bindgen(js_name = brokenFeatures)]
+    pub fn broken_features(&self, rgba: &[u8], width: u32, height: u32) -> JsResult<f64> {
+        let output = from_rgba8(width as usize, height as usize, rgba)?;
+        Ok(self.baseline.broken(&output))
     }
 
     /// The curves as a mask, one byte per pixel (1 on a curve): `featureMask` of

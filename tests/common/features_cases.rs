@@ -3,7 +3,9 @@
 //! broken-feature measure, and bad input.
 
 use js_sys::{Array, Uint8ClampedArray};
-use texsynth::bindings::{Exemplar, FeatureSynthesis, detect_features, measure_broken_features};
+use texsynth::bindings::{
+    Exemplar, FeatureMap, FeatureSynthesis, detect_features, measure_broken_features,
+};
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -174,4 +176,46 @@ fn a_feature_mask_sent_as_bytes_gives_the_map_s_synthesis() {
         run(FeatureSynthesis::with_feature_map(&ex, &map, opts(None)).unwrap()),
         detected
     );
+}
+
+#[wasm_bindgen_test]
+fn a_constructed_map_strokes_and_counts_broken_features_as_measured() {
+    let ex = Exemplar::from_bytes(TILES_64).unwrap();
+    let opts = || options(&[("features", "edges".into()), ("threshold", 0.85.into())]);
+    let mut map = FeatureMap::new(&ex, opts()).unwrap();
+    let detected = detect_features(&ex, opts()).unwrap();
+    assert_eq!(map.to_mask().to_vec(), detected.to_mask().to_vec());
+    // A stroke in one move paints a gapless curve across the map; a wide erase clears a band.
+    map.paint_line(-20.0, 31.5, 90.0, 31.5, 0.5, false).unwrap();
+    map.paint_line(0.0, 31.0, 63.0, 31.0, 0.5, true).unwrap();
+    let mask = map.to_mask().to_vec();
+    assert!((0..64).all(|x| mask[31 * 64 + x] == 1), "row 31 painted");
+    map.paint_line(20.0, 0.0, 20.0, 63.0, 3.0, false).unwrap();
+    let mask = map.to_mask().to_vec();
+    assert!(
+        (0..64).all(|y| (18..=22).all(|x| mask[y * 64 + x] == 0)),
+        "band erased"
+    );
+    // An output scored against the map: the exemplar as detected, not as edited.
+    let mut s = FeatureSynthesis::with_feature_map(
+        &ex,
+        &map,
+        options(&[
+            ("outputWidth", 80.into()),
+            ("outputHeight", 72.into()),
+            ("patchSize", 32.into()),
+        ]),
+    )
+    .unwrap();
+    while !s.done() {
+        s.step().unwrap();
+    }
+    let out = Uint8ClampedArray::new_with_length(80 * 72 * 4);
+    s.render_into(&out).unwrap();
+    let pixels = out.to_vec();
+    let measured = measure_broken_features(&ex, &pixels, 80, 72, opts()).unwrap();
+    assert_eq!(map.broken_features(&pixels, 80, 72).unwrap(), measured);
+    assert_eq!(detected.broken_features(&pixels, 80, 72).unwrap(), measured);
+    assert!(error_message(map.broken_features(&pixels, 80, 71)).contains("expected"));
+    assert!(error_message(map.paint_line(0.0, 0.0, f32::NAN, 1.0, 1.0, true)).contains("x1"));
 }

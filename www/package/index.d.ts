@@ -645,10 +645,20 @@ export interface DetectFeaturesOptions {
 }
 /** An exemplar's feature map: one-pixel-wide curves with their tangents; paint to correct it. */
 export class FeatureMap {
+  /** The same as `detectFeatures(exemplar, options)` (so that a worker can make one). */
+  constructor(exemplar: Exemplar, options?: DetectFeaturesOptions);
   free(): void;
   [Symbol.dispose](): void;
   /** Paints (`on` true) or erases a disc of `radius` (0..64) pixels at (x, y). */
   paint(x: number, y: number, radius: number, on: boolean): void;
+  /** Paints or erases the stroke from (x0, y0) to (x1, y1) with a disc of `radius` pixels, without gaps. */
+  paintLine(x0: number, y0: number, x1: number, y1: number, radius: number, on: boolean): void;
+  /**
+   * The broken-feature count of an RGBA output against this map's exemplar as detected (edits
+   * do not move it): `measureBrokenFeatures` with this map's options, without detecting the
+   * exemplar again.
+   */
+  brokenFeatures(rgba: Uint8Array | Uint8ClampedArray, width: number, height: number): number;
   /** The curves as RGBA, coloured by orientation bucket. */
   renderInto(target: RgbaTarget): void;
   /** One byte per pixel, 1 on a curve: `featureMask` of `FeatureSynthesisOptions`. */

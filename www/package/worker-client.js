@@ -39,13 +39,26 @@ export class TexsynthWorker {
     });
   }
 
-  /** Creates a session of `kind` ('TextureOptimization', 'GraphcutTextures', ...) in this worker. */
+  /**
+   * Creates a session of `kind` ('TextureOptimization', 'GraphcutTextures', ...) in this worker:
+   * `new kind(...args)` there, or with `kind` 'Class.factory' the static constructor
+   * (`'FeatureSynthesis.withFeatureMap'`). An argument that is a session of this worker (a
+   * WorkerSession or its mirror: a FeatureMap made here, say) is passed as that object itself.
+   */
   async createSession(kind, ...args) {
     await this.ready;
     const transfer = [];
-    const wire = args.map((a) => exemplarWire(a, transfer));
+    const wire = args.map((a) => this.refWire(a) ?? exemplarWire(a, transfer));
     const { session, width, height } = await this.request({ type: 'create', kind, args: wire }, { transfer });
     return new WorkerSession(this, session, kind, width, height);
+  }
+
+  /** { ref: id } for a session of this worker (or its mirror); undefined for anything else. */
+  refWire(value) {
+    const remote = value instanceof MirrorSession ? value.remote : value;
+    if (!(remote instanceof WorkerSession)) return undefined;
+    if (remote.worker !== this) throw new Error(`${remote.kind} lives in another worker: an argument must be made in the same one`);
+    return { ref: remote.id };
   }
 
   terminate() {

@@ -1,7 +1,9 @@
 // The inside of a texsynth worker (Web Worker or worker_threads): owns sessions, runs them, and
 // answers the client of worker-client.js. Messages in: { id, type, ... }; every reply carries
 // the id of the request it answers. Images travel as transferred ArrayBuffers.
-//   create { kind, args }       args: exemplars as { bytes } or { rgba, width, height }
+//   create { kind, args }       args: exemplars as { bytes } or { rgba, width, height }, objects
+//                               made here before as { ref: id }; kind 'Class' (new Class(...args))
+//                               or 'Class.factory' (Class.factory(...args), a static constructor)
 //   step   { render }           one step -> { event, image? }
 //   run    { render, every }    steps until done or paused; streams { type: 'event', event, image? }
 //   pause                       stops a run after the current step
@@ -15,7 +17,9 @@
 //   free
 // Any class the package exports can be made here (a session added in Rust needs nothing in this
 // file); constructor arguments of the form { bytes } or { rgba, width, height } become Exemplars,
-// and { clip: { width, height, frames, rgba } } a VideoClip.
+// { clip: { width, height, frames, rgba } } a VideoClip, and { ref: id } the object created here
+// by request id (a FeatureMap detected and edited here, handed to FeatureSynthesis.withFeatureMap
+// without copying a photo-sized map through the page and detecting it again).
 const isExemplarWire = (a) =>
   a !== null && typeof a === 'object' && !ArrayBuffer.isView(a) && !Array.isArray(a) &&
   (('bytes' in a && Object.keys(a).length === 1) || ('rgba' in a && 'width' in a && 'height' in a && Object.keys(a).length === 3));
@@ -23,6 +27,7 @@ const isExemplarWire = (a) =>
 // A video clip travels as { clip: { width, height, frames, rgba } } (the frames' RGBA one after the
 // other) and becomes a VideoClip.
 const isClipWire = (a) => a !== null && typeof a === 'object' && Object.keys(a).length === 1 && a.clip?.rgba !== undefined;
+const isRefWire = (a) => a !== null && typeof a === 'object' && Object.keys(a).length === 1 && Number.isInteger(a.ref);
 
 /**
  * The central `maxSide` x `maxSide` (at most) window of a `width` x `height` output, or null when
@@ -128,12 +133,20 @@ export function serve(lib, { post, listen }) {
     const { id, type, session: sid } = message;
     try {
       if (type === 'create') {
-        const Cls = lib[message.kind];
-        if (typeof Cls !== 'function' || !/^[A-Z]/.test(message.kind) || message.kind === 'Exemplar' || !Cls.prototype?.free) {
+        const [name, factory, ...rest] = String(message.kind).split('.');
+        const Cls = lib[name];
+        if (typeof Cls !== 'function' || !/^[A-Z]/.test(name) || name === 'Exemplar' || !Cls.prototype?.free || rest.length) {
           throw new Error(`unknown session kind '${message.kind}'`);
         }
-        const args = message.args.map((a) => (isExemplarWire(a) ? toExemplar(a) : isClipWire(a) ? toClip(a) : a));
-        const session = new Cls(...args);
+        if (factory !== undefined && (!/^[a-z]\w*$/.test(factory) || typeof Cls[factory] !== 'function')) {
+          throw new Error(`${name} has no static constructor '${factory}'`);
+        }
+        const toObject = ({ ref }) => {
+          if (!sessions.has(ref)) throw new Error(`no object ${ref} in this worker (freed, or made by another)`);
+          return sessions.get(ref);
+        };
+        const args = message.args.map((a) => (isExemplarWire(a) ? toExemplar(a) : isClipWire(a) ? toClip(a) : isRefWire(a) ? toObject(a) : a));
+        const session = factory === undefined ? new Cls(...args) : Cls[factory](...args);
         // A clip has been copied into the session.
         for (const a of args) if (lib.VideoClip && a instanceof lib.VideoClip) a.free();
         // The exemplar stays for `quality`; the others are freed.

@@ -4,6 +4,7 @@ import type {
   GraphcutTexturesOptions, LayerDesignEvent, LayerDesignOptions, TextureBrushOptions,
   TextureOptimizationEvent, TextureOptimizationOptions, TileableEvent, TileableOptions,
   FeatureSynthesisEvent, FeatureSynthesisOptions, VideoTexturesEvent, VideoTexturesOptions,
+  DetectFeaturesOptions,
 } from './index.js';
 
 /** A video clip to send to a worker: the frames' RGBA one after the other; it becomes a VideoClip. */
@@ -22,6 +23,10 @@ export interface SessionKinds {
   LayerDesign: { args: [LayerDesignOptions?]; event: LayerDesignEvent };
   TextureBrush: { args: [ExemplarInput, TextureBrushOptions?]; event: never };
   FeatureSynthesis: { args: [ExemplarInput, FeatureSynthesisOptions?]; event: FeatureSynthesisEvent };
+  /** Not a session: a feature map detected (and edited with `call('paintLine', ...)`) in the worker. */
+  FeatureMap: { args: [ExemplarInput, DetectFeaturesOptions?]; event: never };
+  /** A static constructor: the map argument is a FeatureMap made in the same worker (or its mirror). */
+  'FeatureSynthesis.withFeatureMap': { args: [ExemplarInput, WorkerSession<'FeatureMap'>, FeatureSynthesisOptions?]; event: FeatureSynthesisEvent };
   VideoTextures: { args: [ClipInput, VideoTexturesOptions?]; event: VideoTexturesEvent };
 }
 export type SessionKind = keyof SessionKinds;

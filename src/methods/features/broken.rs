@@ -5,7 +5,7 @@
 //! Both maps are detected the same way, with the exemplar's absolute threshold, so the figure
 //! judges the pictures, whichever method made them.
 
-use super::detect::{DetectOptions, detect, detect_with_threshold};
+use super::detect::{DetectOptions, FeatureMap, detect, detect_with_threshold};
 use super::thinning::endpoints;
 use crate::core::{Image, Result};
 
@@ -19,14 +19,40 @@ pub fn ends_per_thousand(mask: &[bool], width: usize, height: usize) -> f64 {
     1000.0 * endpoints(mask, width, height) as f64 / pixels as f64
 }
 
+/// What the count needs of the exemplar: how its map was detected (the absolute threshold
+/// included, so that outputs are detected the same way) and its own curve ends. Kept apart from
+/// the map so that a map edited by hand still scores outputs against the exemplar as detected.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BrokenBaseline {
+    options: DetectOptions,
+    threshold: f32,
+    ends_per_thousand: f64,
+}
+
+impl BrokenBaseline {
+    /// The baseline of `own`, the exemplar's map as `detect(exemplar, options)` gave it.
+    #[must_use]
+    pub fn of(own: &FeatureMap, options: DetectOptions) -> BrokenBaseline {
+        BrokenBaseline {
+            options,
+            threshold: own.threshold,
+            ends_per_thousand: ends_per_thousand(&own.mask, own.width, own.height),
+        }
+    }
+
+    /// The broken-feature count of `output`.
+    #[must_use]
+    pub fn broken(&self, output: &Image) -> f64 {
+        let o = self.options;
+        let theirs = detect_with_threshold(output, o.kind, self.threshold, o.alpha);
+        ends_per_thousand(&theirs.mask, output.width(), output.height()) - self.ends_per_thousand
+    }
+}
+
 /// The broken-feature count of `output` against `exemplar`.
 pub fn broken_features(exemplar: &Image, output: &Image, options: DetectOptions) -> Result<f64> {
     let own = detect(exemplar, options)?;
-    let theirs = detect_with_threshold(output, options.kind, own.threshold, options.alpha);
-    Ok(
-        ends_per_thousand(&theirs.mask, output.width(), output.height())
-            - ends_per_thousand(&own.mask, exemplar.width(), exemplar.height()),
-    )
+    Ok(BrokenBaseline::of(&own, options).broken(output))
 }
 
 #[cfg(test)]

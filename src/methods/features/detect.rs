@@ -273,6 +273,73 @@ impl FeatureMap {
             }
         }
     }
+
+    /// Paints (true) or erases (false) the stroke from (x0, y0) to (x1, y1) with discs of
+    /// `radius`, at most half a pixel apart, so that a brush moved fast over a large map leaves a
+    /// curve without gaps (a pointer reports its moves tens of map pixels apart on a photo).
+    /// The part of the stroke outside the map (grown by the brush) is left out, so a stroke
+    /// reaching far off the map paints what lies on it, in time bounded by the map's size
+    /// (clipped in f64: exact to a small fraction of a pixel for ends within 1e9 pixels).
+    pub fn paint_line(
+        &mut self,
+        (x0, y0): (f32, f32),
+        (x1, y1): (f32, f32),
+        radius: f32,
+        on: bool,
+    ) {
+        let margin = f64::from(radius.max(0.5)) + 1.0;
+        let (a, b) = (
+            (f64::from(x0), f64::from(y0)),
+            (f64::from(x1), f64::from(y1)),
+        );
+        let Some((t0, t1)) = clip_segment(
+            a,
+            b,
+            (-margin, self.width as f64 + margin),
+            (-margin, self.height as f64 + margin),
+        ) else {
+            return;
+        };
+        let at = |t: f64| {
+            (
+                (a.0 + t * (b.0 - a.0)) as f32,
+                (a.1 + t * (b.1 - a.1)) as f32,
+            )
+        };
+        let ((x0, y0), (x1, y1)) = (at(t0), at(t1));
+        let length = crate::core::math::hypotf(x1 - x0, y1 - y0);
+        let steps = (2.0 * length).ceil().max(1.0) as usize;
+        for k in 0..=steps {
+            let t = k as f32 / steps as f32;
+            self.paint(x0 + t * (x1 - x0), y0 + t * (y1 - y0), radius, on);
+        }
+    }
+}
+
+/// The parameter range [t0, t1] of the segment from `a` to `b` that lies in the box `xs` x `ys`
+/// (Liang-Barsky), or None when it misses the box.
+fn clip_segment(
+    a: (f64, f64),
+    b: (f64, f64),
+    xs: (f64, f64),
+    ys: (f64, f64),
+) -> Option<(f64, f64)> {
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, d, lo, hi) in [(a.0, b.0 - a.0, xs.0, xs.1), (a.1, b.1 - a.1, ys.0, ys.1)] {
+        if d == 0.0 {
+            if p < lo || p > hi {
+                return None;
+            }
+            continue;
+        }
+        let (mut ta, mut tb) = ((lo - p) / d, (hi - p) / d);
+        if ta > tb {
+            std::mem::swap(&mut ta, &mut tb);
+        }
+        t0 = t0.max(ta);
+        t1 = t1.min(tb);
+    }
+    (t0 <= t1).then_some((t0, t1))
 }
 
 #[cfg(test)]
@@ -280,6 +347,35 @@ mod tests {
     use super::*;
     use crate::core::testing::sample;
     use crate::methods::features::thinning::components;
+
+    #[test]
+    fn a_painted_stroke_is_one_curve_without_gaps() {
+        let image = Image::from_fn(64, 32, 1, |_, _, _| 0.5).unwrap();
+        let mut map = detect(&image, DetectOptions::default()).unwrap();
+        assert_eq!(map.count(), 0, "a flat image has no features");
+        // A diagonal stroke 40 pixels long in one move, as a fast pointer reports it.
+        map.paint_line((4.0, 4.0), (44.0, 24.0), 0.6, true);
+        assert_eq!(components(&map.mask, 64, 32), 1, "one connected curve");
+        for x in 4usize..=44 {
+            let y: usize = 4 + (x - 4) / 2;
+            let near = (y.saturating_sub(1)..=y + 1).any(|yy| map.mask[yy * 64 + x]);
+            assert!(near, "the curve passes x = {x}");
+        }
+        // Erasing the middle with a wider brush cuts it in two.
+        map.paint_line((24.0, 0.0), (24.0, 31.0), 2.5, false);
+        assert_eq!(components(&map.mask, 64, 32), 2);
+        assert!(!map.mask[14 * 64 + 24]);
+        // A stroke from far off the map paints the part on it, at once.
+        let before = map.count();
+        map.paint_line((-1e8, 10.0), (1e8, 10.0), 0.5, true);
+        assert!(
+            (0..64).all(|x| map.mask[10 * 64 + x]),
+            "row 10 painted across"
+        );
+        assert!(map.count() > before);
+        map.paint_line((-1e8, -1e8), (-1e7, 1e8), 0.5, true); // misses the map
+        map.paint_line((70.0, 5.0), (90.0, 5.0), 0.5, true);
+    }
 
     #[test]
     fn buckets_and_tangent_differences() {
