@@ -187,6 +187,40 @@ impl FeatureMap {
     pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
         write_rgba(&feature_rgba(&self.map.mask, &self.map.angle), target)
     }
+
+    /// The curves as `width` x `height` RGBA (1 to 4096 a side), each pixel showing a curve pixel
+    /// of its footprint if it has one: a photo's map, drawn the size of its view, keeps every
+    /// one-pixel curve (a browser's scaling of the full-size view averages them away).
+    #[wasm_bindgen(js_name = renderScaled)]
+    pub fn render_scaled(&self, width: u32, height: u32) -> JsResult<Uint8ClampedArray> {
+        for (name, v) in [("width", width), ("height", height)] {
+            if !(1..=4096).contains(&v) {
+                return Err(invalid(name, format!("must be 1 to 4096, got {v}")));
+            }
+        }
+        let (w, h) = (width as usize, height as usize);
+        let (mw, mh) = (self.map.width, self.map.height);
+        let mut rgba = vec![0u8; w * h * 4];
+        // Footprint of view pixel t along a side: map pixels [t * m / v, (t + 1) * m / v), at
+        // least one.
+        let span = |t: usize, m: usize, v: usize| {
+            let a = t * m / v;
+            a..((t + 1) * m / v).max(a + 1).min(m)
+        };
+        for ty in 0..h {
+            for tx in 0..w {
+                let hit = span(ty, mh, h)
+                    .flat_map(|y| span(tx, mw, w).map(move |x| y * mw + x))
+                    .find(|&i| self.map.mask[i]);
+                if let Some(i) = hit {
+                    let colour =
+                        BUCKET_COLOURS[crate::methods::features::detect::bucket(self.map.angle[i])];
+                    rgba[(ty * w + tx) * 4..][..4].copy_from_slice(&colour);
+                }
+            }
+        }
+        Ok(Uint8ClampedArray::from(rgba.as_slice()))
+    }
 }
 
 /// The four bucket colours of the feature views.
