@@ -226,17 +226,53 @@ test('a photo used whole synthesises, and the quality line says why it is not me
   assert.equal(await page.getAttribute('#gc-quality', 'data-failed'), 'true');
   await page.screenshot({ path: `${RESULTS}/large-upload-photo-quality.png`, fullPage: true });
 
-  // Feature-guided synthesis: the photo's features are detected with the synthesis in the
-  // worker, not on the page (13.5 s there held the page from the panel's first draw on).
+  // Feature-guided synthesis: the photo's features are detected in the worker, not on the page
+  // (13.5 s there held the page from the panel's first draw on), then drawn, edited and used.
   let started = Date.now();
   await page.click('button[data-panel="features"]');
   await page.evaluate(() => 1);
   assert.ok(Date.now() - started < 3000, `the panel opened in ${Date.now() - started} ms`);
   assert.equal(await page.getAttribute('#fg-exemplar-caption', 'data-detected-here'), 'false');
-  assert.match(await page.textContent('#fg-exemplar-caption'), /exemplar 4000×3000: its features are detected with the synthesis, off the page/);
+  assert.match(await page.textContent('#fg-exemplar-caption'), /exemplar 4000×3000: detecting its features in the worker/);
+  // The page answers while the worker detects.
+  for (let i = 0; i < 3; i++) {
+    started = Date.now();
+    await page.evaluate(() => 1);
+    assert.ok(Date.now() - started < 1000, `the page answered in ${Date.now() - started} ms`);
+    await page.waitForTimeout(300);
+  }
+  await page.waitForSelector('#fg-exemplar-caption[data-map-ready="true"]', { timeout: 120_000 });
+  const caption = await page.textContent('#fg-exemplar-caption');
+  assert.match(caption, /^exemplar features: \d+ pixels \(the 4000×3000 photo's map, detected and edited in the worker\)$/);
+  const before = Number(/(\d+) pixels/.exec(caption)[1]);
+  // The view is drawn the size it is shown (140 CSS pixels, not 4000x3000), so the map's
+  // one-pixel curves show.
+  const view = await page.evaluate(() => [document.getElementById('fg-exemplar').width, document.getElementById('fg-exemplar').height]);
+  assert.deepEqual(view, [140, 105]);
+  // Paint a curve across the photo in one fast move: the worker's map gains a gapless stroke
+  // (about 0.6 of 4000 map pixels), and the view shows it.
+  await page.check('input[name="fg-brush"][value="paint"]');
+  const box = await page.locator('#fg-exemplar').boundingBox();
+  const y = box.y + box.height * 0.37;
+  await page.mouse.move(box.x + box.width * 0.2, y);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width * 0.8, y, { steps: 2 });
+  await page.mouse.up();
+  await page.check('input[name="fg-brush"][value="off"]');
+  await page.waitForFunction((n) => Number(/(\d+) pixels/.exec(document.getElementById('fg-exemplar-caption').textContent)?.[1]) > n + 2000, before, { timeout: 30_000 });
+  const painted = await page.evaluate((row) => {
+    const canvas = document.getElementById('fg-exemplar');
+    const data = canvas.getContext('2d').getImageData(0, row, canvas.width, 1).data;
+    // The four orientation-bucket colours of the feature views.
+    const buckets = ['255,90,80', '250,210,70', '90,200,255', '170,120,255'];
+    let shown = 0;
+    for (let i = 0; i < data.length; i += 4) if (buckets.includes(`${data[i]},${data[i + 1]},${data[i + 2]}`)) shown++;
+    return shown;
+  }, Math.floor(105 * 0.37));
+  assert.ok(painted > 70, `the painted curve shows in the view's row: ${painted} of 140 pixels`);
   await page.fill('#fg-patch', '32');
   await page.click('#run');
-  // The page answers while the worker detects and synthesises.
+  // The page answers while the worker synthesises.
   for (let i = 0; i < 4; i++) {
     started = Date.now();
     await page.evaluate(() => 1);
@@ -245,8 +281,12 @@ test('a photo used whole synthesises, and the quality line says why it is not me
   }
   await page.waitForSelector('body[data-features-done="true"]', { timeout: 180_000 });
   assert.ok(Number(await page.getAttribute('body', 'data-feature-patches')) >= 1);
-  assert.match(await page.textContent('#fg-quality'), /broken features not measured \(a photo-sized exemplar/);
-  assert.match(await page.textContent('#fg-graphcut-caption'), /broken features not measured/);
+  // Both broken-feature counts are measured, against the worker's map of the photo.
+  const ours = Number(await page.getAttribute('#fg-quality', 'data-broken') ?? NaN);
+  const theirs = Number(await page.getAttribute('#fg-graphcut-caption', 'data-broken') ?? NaN);
+  assert.ok(Number.isFinite(ours) && Number.isFinite(theirs), `${ours} ${theirs}`);
+  assert.match(await page.textContent('#fg-quality'), /broken features -?\d+\.\d$/);
+  assert.match(await page.textContent('#fg-graphcut-caption'), /broken features -?\d+\.\d \(feature-guided: -?\d+\.\d; lower is better\)/);
   await page.screenshot({ path: `${RESULTS}/large-upload-photo-features.png`, fullPage: true });
   await page.click('button[data-panel="graphcut"]');
   // Back to the state the next test starts from.

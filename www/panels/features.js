@@ -3,26 +3,18 @@
 // patch's context region, correspondences and warp grid, and plain graph-cut textures run on the
 // same exemplar and seed for comparison, with the broken-feature count of each.
 // Both syntheses run in the page's worker (www/lib/worker.js); the exemplar's map is detected and
-// edited here (one call on an exemplar-sized image) and sent along as a mask, unless the exemplar
-// is a photo used whole (see PAGE_DETECT_PIXELS).
-import { detectFeatures, measureBrokenFeatures } from '../pkg/texsynth.js';
-import { drawInto, drawOverlay } from '../lib/canvas.js';
+// edited on the page, or in the worker for a photo used whole (features-map.js), and guides the
+// synthesis as edited.
+import { drawInto } from '../lib/canvas.js';
 import { showQualityOrWhy } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
 import { paintable } from '../lib/keyboard-brush.js';
 import { remoteSession } from '../lib/worker.js';
 import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
+import { detectExemplarMap, PAGE_DETECT_PIXELS } from './features-map.js';
 
 export const id = 'features';
 export const title = 'Feature-guided';
-
-/**
- * The largest exemplar (in pixels) whose feature map is detected on the page, where it can be
- * seen and edited: detection took 13.5 s on the main thread for a 4000x3000 photo used whole (1.7 s
- * at 1024x1024), holding the page. Larger exemplars are detected by the session in the worker,
- * and the broken-feature counts, which detect the exemplar again, are not measured for them.
- */
-const PAGE_DETECT_PIXELS = 512 * 512;
 
 const WARP_TITLE = 'bend each patch so its features meet the placed ones (section 2.2)';
 const ANATOMY_TITLE = 'graph-cut placement: each placement\'s colour-cost surface, the probabilities it was drawn by (colour plus feature cost) and its seam graph';
@@ -65,6 +57,7 @@ export function createPanel(ui) {
   let graphcut = null;
   let pending = null;
   let painting = false;
+  let oursBroken = Promise.resolve(null);
   // With the placement anatomy on (graph-cut placement), each step also brings back the
   // placement's cost surface and seam graph (recorded by the session only when asked).
   // The scan placement warps its patches (section 2.2); graph-cut placement does not.
@@ -90,45 +83,87 @@ export function createPanel(ui) {
   }
 
   const detectOptions = () => ({ features: ui.$('fg-kind').value, threshold: Number(ui.$('fg-threshold').value) });
-  const detectsHere = () => ui.exemplar().width * ui.exemplar().height <= PAGE_DETECT_PIXELS;
+  let detecting = null;
+  let mapOptions = null;
+  let lastPaint = null;
+  let detectError = null;
 
+  /**
+   * Detects the exemplar's map (on the page, or in the worker for a photo: features-map.js) and
+   * draws it; resolves to the map, or null when detection failed or a newer one superseded it.
+   */
   function detect() {
     map?.free();
     map = null;
+    detectError = null;
     mapOf = ui.exemplar();
-    if (!detectsHere()) {
-      const { width, height } = ui.exemplar();
-      const canvas = ui.$('fg-exemplar');
-      drawInto(canvas, ui.exemplar());
-      const caption = ui.$('fg-exemplar-caption');
-      caption.textContent = `exemplar ${width}×${height}: its features are detected with the synthesis, ` +
-        'off the page; shrink or crop it to see and edit its map here';
+    const { width, height } = mapOf;
+    const caption = ui.$('fg-exemplar-caption');
+    caption.dataset.mapReady = 'false';
+    // The view's side in device pixels (the canvas is shown 140 CSS pixels square).
+    const shown = ui.$('fg-exemplar').getBoundingClientRect();
+    const side = Math.round(Math.max(shown.width, shown.height, 64) * (window.devicePixelRatio || 1));
+    const job = detectExemplarMap(mapOf, detectOptions(), side).then((m) => {
+      if (detecting !== job) {
+        m.free();
+        return null;
+      }
+      map = m;
+      drawExemplarMap();
+      return m;
+    }, (error) => {
+      if (detecting !== job) return null;
+      detectError = error?.message ?? String(error);
+      caption.textContent = `exemplar ${width}×${height}: features not detected (${detectError}); the synthesis detects its own`;
+      return null;
+    });
+    detecting = job;
+    mapOptions = JSON.stringify(detectOptions());
+    if (width * height > PAGE_DETECT_PIXELS) {
+      // A photo: shown at once, its curves once the worker has found them.
+      drawInto(ui.$('fg-exemplar'), mapOf);
+      caption.textContent = `exemplar ${width}×${height}: detecting its features in the worker (seconds for a photo)…`;
       caption.dataset.detectedHere = 'false';
-      return;
     }
-    map = detectFeatures(ui.exemplar(), detectOptions());
-    drawExemplarMap();
+    return job;
+  }
+
+  /** The map of the current exemplar and options: detected again only when one of them changed. */
+  function ensureMap() {
+    const same = detecting && mapOf === ui.exemplar() && mapOptions === JSON.stringify(detectOptions());
+    return same ? detecting : detect();
   }
 
   function drawExemplarMap() {
-    const canvas = ui.$('fg-exemplar');
-    drawInto(canvas, ui.exemplar());
-    const ctx = canvas.getContext('2d');
-    ctx.fillStyle = 'rgba(0,0,0,0.45)';
-    ctx.fillRect(0, 0, canvas.width, canvas.height);
-    drawOverlay(canvas, map.width, map.height, (b) => map.renderInto(b));
-    ui.$('fg-exemplar-caption').textContent = `exemplar features: ${map.count} pixels`;
-    ui.$('fg-exemplar-caption').dataset.detectedHere = 'true';
+    map.draw(ui.$('fg-exemplar'));
+    const caption = ui.$('fg-exemplar-caption');
+    caption.textContent = `exemplar features: ${map.count} pixels` +
+      (map.here ? '' : ` (the ${map.width}×${map.height} photo's map, detected and edited in the worker)`);
+    caption.dataset.detectedHere = String(map.here);
+    caption.dataset.mapReady = 'true';
   }
 
-  function paintAt(event) {
+  /**
+   * A brush move on the exemplar's map: a stroke from the last point (no gaps however fast the
+   * pointer). The brush is 0.6 map pixels to paint (curves stay one pixel wide) and 2.5 screen
+   * pixels, at least 2.5 map pixels, to erase (on a photo's map a screen pixel is many).
+   */
+  function paintAt(event, start) {
     const mode = document.querySelector('input[name="fg-brush"]:checked').value;
     if (mode === 'off' || !map) return;
     const box = ui.$('fg-exemplar').getBoundingClientRect();
+    if (!(box.width > 0 && box.height > 0)) return;
     const x = ((event.clientX - box.left) / box.width) * map.width;
     const y = ((event.clientY - box.top) / box.height) * map.height;
-    map.paint(x, y, mode === 'paint' ? 0.6 : 2.5, mode === 'paint');
-    drawExemplarMap();
+    const from = start || !lastPaint ? [x, y] : lastPaint;
+    lastPaint = [x, y];
+    const radius = mode === 'paint' ? 0.6 : 2.5 * Math.max(1, map.width / box.width);
+    const painted = map;
+    map.stroke(from[0], from[1], x, y, radius, mode === 'paint', () => {
+      if (map === painted) drawExemplarMap();
+    }).catch((error) => {
+      if (map === painted) ui.$('fg-exemplar-caption').textContent = `the edit failed: ${error?.message ?? error}`;
+    });
     resetSessions();
   }
 
@@ -146,8 +181,8 @@ export function createPanel(ui) {
       placement: ui.$('fg-placement').value,
       patchSize: Number(ui.$('fg-patch').value),
       warp: ui.$('fg-warp').checked,
-      // Without a map (a photo used whole) the session detects one with the same options.
-      ...(map ? { featureMask: map.toMask() } : {}),
+      // The map as edited goes along with these (see features-map.js); without one (its
+      // detection failed) the session detects its own with the same options.
       ...detectOptions(),
     };
   }
@@ -203,17 +238,15 @@ export function createPanel(ui) {
     ctx.drawImage(src, 0, 0, canvas.width, canvas.height);
   }
 
-  /** The session's broken-feature count, or null where it is not measured (see PAGE_DETECT_PIXELS). */
+  /**
+   * The session's broken-feature count against the exemplar's map as detected, or null where
+   * there is no map (its detection failed).
+   */
   function broken(session) {
-    if (!detectsHere()) return null;
-    const rgba = new Uint8ClampedArray(session.width * session.height * 4);
-    session.renderInto(rgba);
-    return measureBrokenFeatures(ui.exemplar(), rgba, session.width, session.height, detectOptions());
+    return map ? map.broken(session) : Promise.resolve(null);
   }
 
-  const brokenText = (b) => (b === null
-    ? 'not measured (a photo-sized exemplar: detecting its features again would hold the page; shrink or crop it)'
-    : b.toFixed(1));
+  const brokenText = (b) => (b === null ? `not measured (${detectError ?? 'no feature map'})` : b.toFixed(1));
 
   function resetSessions() {
     synthesis?.free();
@@ -244,8 +277,8 @@ export function createPanel(ui) {
     sideHtml: SIDE_HTML,
     mount() {
       const ex = ui.$('fg-exemplar');
-      ex.onpointerdown = (e) => { painting = true; paintAt(e); };
-      ex.onpointermove = (e) => painting && paintAt(e);
+      ex.onpointerdown = (e) => { painting = true; paintAt(e, true); };
+      ex.onpointermove = (e) => painting && paintAt(e, false);
       this.onPointerUp = () => { painting = false; };
       window.addEventListener('pointerup', this.onPointerUp);
       paintable(ex, 'Edit the feature map');
@@ -269,17 +302,23 @@ export function createPanel(ui) {
     unmount() {
       window.removeEventListener('pointerup', this.onPointerUp);
       resetSessions();
+      // A detection still running frees its map when it ends (see detect).
+      detecting = null;
       map?.free();
       map = null;
     },
     async step() {
-      if (mapOf !== ui.exemplar()) detect();
+      ensureMap();
       if (!synthesis) {
-        // The constructor detects and indexes the exemplar's features: seconds for a photo.
+        // The constructor indexes the exemplar's features: seconds for a photo, whose map the
+        // worker may still be detecting.
         const { width, height } = ui.exemplar();
         ui.$('fg-readout').textContent = `setting up: the feature index of the ${width}×${height} exemplar` +
-          (detectsHere() ? '' : ' (its features are detected first: a photo-sized exemplar takes several seconds)');
-        synthesis = await made(() => remoteSession('FeatureSynthesis', [ui.exemplar(), options()], FEATURE_VIEWS));
+          (map ? '' : ' (its features are being detected: a photo takes several seconds)');
+        const guide = await detecting;
+        synthesis = await made(() => (guide
+          ? guide.synthesis(options(), FEATURE_VIEWS)
+          : remoteSession('FeatureSynthesis', [ui.exemplar(), options()], FEATURE_VIEWS)));
         if (!synthesis) return null;
         if (anatomyOn()) await synthesis.send('setAnatomy', true);
       }
@@ -316,11 +355,12 @@ export function createPanel(ui) {
         document.body.dataset.featurePatches = String(event.patch + 1);
         if (anatomyOn()) showPlacementAnatomy(ui.$, synthesis.result('placementCosts'), synthesis.result('placementGraph'));
         if (event.featuresDone) {
-          const b = broken(synthesis);
           const quality = ui.$('fg-quality');
-          quality.dataset.broken = String(b);
           const scored = synthesis;
-          showQualityOrWhy(quality, ui.exemplar(), synthesis, () => synthesis === scored).then(() => {
+          oursBroken = broken(synthesis);
+          Promise.all([oursBroken, showQualityOrWhy(quality, ui.exemplar(), synthesis, () => synthesis === scored)]).then(([b]) => {
+            if (synthesis !== scored) return;
+            quality.dataset.broken = String(b);
             quality.textContent += ` · broken features ${brokenText(b)}`;
             if (!ui.$('fg-compare').checked) document.body.dataset.featuresDone = 'true';
           });
@@ -328,19 +368,21 @@ export function createPanel(ui) {
       } else {
         drawInto(ui.$('fg-graphcut'), graphcut);
         if (event.done) {
-          const b = broken(graphcut);
-          const theirs = ui.$('fg-quality').dataset.broken;
-          ui.$('fg-graphcut-caption').textContent = `plain graph cut, same exemplar and seed · broken features ${brokenText(b)}` +
-            (b === null ? '' : ` (feature-guided: ${brokenText(theirs === 'null' ? null : Number(theirs))}; lower is better)`);
-          ui.$('fg-graphcut-caption').dataset.broken = String(b);
-          document.body.dataset.featuresDone = 'true';
+          const scored = graphcut;
+          Promise.all([broken(graphcut), oursBroken]).then(([b, ours]) => {
+            if (graphcut !== scored) return;
+            ui.$('fg-graphcut-caption').textContent = `plain graph cut, same exemplar and seed · broken features ${brokenText(b)}` +
+              (b === null ? '' : ` (feature-guided: ${brokenText(ours)}; lower is better)`);
+            ui.$('fg-graphcut-caption').dataset.broken = String(b);
+            document.body.dataset.featuresDone = 'true';
+          });
         }
       }
     },
     reset() {
       resetSessions();
       if (ui.exemplar()) {
-        detect();
+        ensureMap();
         const ctx = ui.outputCanvas.getContext('2d');
         ctx.clearRect(0, 0, ui.outputCanvas.width, ui.outputCanvas.height);
       }

@@ -1,0 +1,124 @@
+// The exemplar's feature map of the "Feature-guided" panel, wherever it is detected: on the page
+// for an exemplar up to PAGE_DETECT_PIXELS, so that painting shows at once; in the page's worker
+// for a photo used whole (its detection took 13.5 s on the main thread for 4000x3000, holding the
+// page). Either way the panel draws it, paints and erases it, starts the synthesis from it as
+// edited, and scores outputs against it (broken features), through the same few calls.
+import { FeatureMap } from '../pkg/texsynth.js';
+import { drawInto, drawOverlay } from '../lib/canvas.js';
+import { remoteSession } from '../lib/worker.js';
+
+/** The largest exemplar (in pixels) whose feature map is detected on the page. */
+export const PAGE_DETECT_PIXELS = 512 * 512;
+
+/**
+ * The view size of a `width` x `height` exemplar whose longer side is shown `side` device pixels
+ * long: a larger exemplar's map is drawn that size, each view pixel showing a curve of its
+ * footprint (FeatureMap.renderScaled), so that one-pixel curves stay visible (the browser's
+ * scaling of a larger view would drop most of them).
+ */
+function viewSize(width, height, side) {
+  const scale = Math.min(1, side / Math.max(width, height));
+  return { width: Math.max(1, Math.round(width * scale)), height: Math.max(1, Math.round(height * scale)) };
+}
+
+/** The exemplar drawn at the view's size (once per map: a photo's pixels are 48 MB). */
+function exemplarView(exemplar, view) {
+  const full = document.createElement('canvas');
+  drawInto(full, exemplar);
+  const out = document.createElement('canvas');
+  out.width = view.width;
+  out.height = view.height;
+  const ctx = out.getContext('2d');
+  ctx.imageSmoothingQuality = 'high';
+  ctx.drawImage(full, 0, 0, view.width, view.height);
+  return out;
+}
+
+/**
+ * Detects the map of `exemplar` with `options` ({ features, threshold }), on the page or in the
+ * worker by its size, to be shown `viewSide` device pixels long. Resolves to { width, height,
+ * count, here, draw(canvas), stroke(...), synthesis(options, spec), broken(session), free() }.
+ */
+export async function detectExemplarMap(exemplar, options, viewSide) {
+  const { width, height } = exemplar;
+  const here = width * height <= PAGE_DETECT_PIXELS;
+  const view = viewSize(width, height, viewSide);
+  const backdrop = here ? exemplar : exemplarView(exemplar, view);
+  const local = here ? new FeatureMap(exemplar, options) : null;
+  const remote = here ? null : await remoteSession('FeatureMap', [exemplar, options], { getters: ['count'] });
+  let overlay = null;
+  const fetchOverlay = async () => {
+    overlay = here ? null : await remote.send('renderScaled', view.width, view.height);
+    if (remote) await remote.refresh();
+  };
+  await fetchOverlay();
+  // Strokes go to the worker in order; the view is fetched again after the last one in flight.
+  let inFlight = 0;
+  let onDrawn = null;
+
+  const map = {
+    width,
+    height,
+    here,
+    get count() { return here ? local.count : remote.getter('count'); },
+
+    /** The exemplar dimmed, with its curves coloured by orientation bucket. */
+    draw(canvas) {
+      if (here) drawInto(canvas, exemplar);
+      else {
+        canvas.width = view.width;
+        canvas.height = view.height;
+        canvas.getContext('2d').drawImage(backdrop, 0, 0);
+      }
+      const ctx = canvas.getContext('2d');
+      ctx.fillStyle = 'rgba(0,0,0,0.45)';
+      ctx.fillRect(0, 0, canvas.width, canvas.height);
+      if (here) drawOverlay(canvas, width, height, (b) => local.renderInto(b));
+      else drawOverlay(canvas, view.width, view.height, new ImageData(overlay, view.width, view.height));
+    },
+
+    /**
+     * Paints (`on`) or erases the stroke from (x0, y0) to (x1, y1), in map pixels, with a disc of
+     * `radius`; `drawn()` is called once the view shows it (at once on the page).
+     */
+    stroke(x0, y0, x1, y1, radius, on, drawn) {
+      if (here) {
+        local.paintLine(x0, y0, x1, y1, radius, on);
+        drawn();
+        return Promise.resolve();
+      }
+      onDrawn = drawn;
+      inFlight++;
+      return remote.send('paintLine', x0, y0, x1, y1, radius, on).then(async () => {
+        if (--inFlight > 0) return;
+        await fetchOverlay();
+        if (inFlight === 0) onDrawn?.();
+      });
+    },
+
+    /**
+     * The FeatureSynthesis of `exemplar` in the worker, guided by this map as edited: its mask
+     * sent along (a small map), or the worker's map itself by reference (a photo's).
+     */
+    synthesis(synthesisOptions, spec) {
+      if (here) {
+        return remoteSession('FeatureSynthesis', [exemplar, { ...synthesisOptions, featureMask: local.toMask() }], spec);
+      }
+      return remoteSession('FeatureSynthesis.withFeatureMap', [exemplar, remote, synthesisOptions], spec);
+    },
+
+    /** The broken-feature count of a session's output against the exemplar as detected. */
+    async broken(session) {
+      const rgba = new Uint8ClampedArray(session.width * session.height * 4);
+      session.renderInto(rgba);
+      if (here) return local.brokenFeatures(rgba, session.width, session.height);
+      return remote.send('brokenFeatures', rgba, session.width, session.height);
+    },
+
+    free() {
+      local?.free();
+      remote?.free();
+    },
+  };
+  return map;
+}
