@@ -191,8 +191,8 @@ impl FeatureMap {
     /// The curves as `width` x `height` RGBA (1 to 4096 a side), each pixel showing a curve pixel
     /// of its footprint if it has one: a photo's map, drawn the size of its view, keeps every
     /// one-pixel curve (a browser's scaling of the full-size view averages them away).
-    #[wasm_bindgen(js_name = renderScaled)]
-    pub fn render_scaled(&self, width: u32, height: u32) -> JsResult<Uint8ClampedArray> {
+    #[wasm_bindgen(js_name = scaledView)]
+    pub fn scaled_view(&self, width: u32, height: u32) -> JsResult<Uint8ClampedArray> {
         for (name, v) in [("width", width), ("height", height)] {
             if !(1..=4096).contains(&v) {
                 return Err(invalid(name, format!("must be 1 to 4096, got {v}")));

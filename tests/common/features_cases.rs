@@ -222,8 +222,8 @@ fn a_constructed_map_strokes_and_counts_broken_features_as_measured() {
     // still shows, and upscaled each map pixel covers a block.
     let full = Uint8ClampedArray::new_with_length(64 * 64 * 4);
     map.render_into(&full).unwrap();
-    assert_eq!(map.render_scaled(64, 64).unwrap().to_vec(), full.to_vec());
-    let small = map.render_scaled(16, 16).unwrap().to_vec();
+    assert_eq!(map.scaled_view(64, 64).unwrap().to_vec(), full.to_vec());
+    let small = map.scaled_view(16, 16).unwrap().to_vec();
     let shown = |v: &[u8], w: usize, x: usize, y: usize| v[(y * w + x) * 4 + 3] == 255;
     // (View column 5 holds map columns 20-23, all in the erased band.)
     assert!(
@@ -231,9 +231,9 @@ fn a_constructed_map_strokes_and_counts_broken_features_as_measured() {
         "row 31 in view row 7"
     );
     assert!((0..16).all(|y| !shown(&small, 16, 5, y)), "the erased band");
-    let big = map.render_scaled(128, 96).unwrap().to_vec();
+    let big = map.scaled_view(128, 96).unwrap().to_vec();
     // Map row 31 is view row 47; map columns 17-23 (erased) are view columns 34-47.
     assert!((0..128).all(|x| shown(&big, 128, x, 47) == !(34..48).contains(&x)));
-    assert!(error_message(map.render_scaled(0, 5)).contains("width"));
-    assert!(error_message(map.render_scaled(5, 5000)).contains("height"));
+    assert!(error_message(map.scaled_view(0, 5)).contains("width"));
+    assert!(error_message(map.scaled_view(5, 5000)).contains("height"));
 }

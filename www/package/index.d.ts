@@ -658,11 +658,11 @@ export class FeatureMap {
    * do not move it): `measureBrokenFeatures` with this map's options, without detecting the
    * exemplar again.
    */
-  brokenFeatures(rgba: Uint8Array | Uint8ClampedArray, width: number, height: number): number;
+  brokenFeatures(rgba: Bytes, width: number, height: number): number;
   /** The curves as RGBA, coloured by orientation bucket. */
   renderInto(target: RgbaTarget): void;
   /** The curves as `width` x `height` RGBA (1..4096), each pixel showing a curve pixel of its footprint if any (a photo's map at its view's size). */
-  renderScaled(width: number, height: number): Uint8ClampedArray;
+  scaledView(width: number, height: number): Uint8ClampedArray;
   /** One byte per pixel, 1 on a curve: `featureMask` of `FeatureSynthesisOptions`. */
   toMask(): Uint8Array;
   readonly width: number;

@@ -13,7 +13,7 @@ export const PAGE_DETECT_PIXELS = 512 * 512;
 /**
  * The view size of a `width` x `height` exemplar whose longer side is shown `side` device pixels
  * long: a larger exemplar's map is drawn that size, each view pixel showing a curve of its
- * footprint (FeatureMap.renderScaled), so that one-pixel curves stay visible (the browser's
+ * footprint (FeatureMap.scaledView), so that one-pixel curves stay visible (the browser's
  * scaling of a larger view would drop most of them).
  */
 function viewSize(width, height, side) {
@@ -48,7 +48,7 @@ export async function detectExemplarMap(exemplar, options, viewSide) {
   const remote = here ? null : await remoteSession('FeatureMap', [exemplar, options], { getters: ['count'] });
   let overlay = null;
   const fetchOverlay = async () => {
-    overlay = here ? null : await remote.send('renderScaled', view.width, view.height);
+    overlay = here ? null : await remote.send('scaledView', view.width, view.height);
     if (remote) await remote.refresh();
   };
   await fetchOverlay();
