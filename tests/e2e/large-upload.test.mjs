@@ -192,6 +192,16 @@ test('Use it whole keeps 1200x900; a small upload and a sample show no prompt', 
   assert.deepEqual(errors, []);
 });
 
+/** Checks `times` times, `pause` ms apart, that the page answers a call within a second. */
+async function answersMeanwhile(page, times, pause) {
+  for (let i = 0; i < times; i++) {
+    const started = Date.now();
+    await page.evaluate(() => 1);
+    assert.ok(Date.now() - started < 1000, `the page answered in ${Date.now() - started} ms`);
+    await page.waitForTimeout(pause);
+  }
+}
+
 test('a photo used whole synthesises, and the quality line says why it is not measured', async () => {
   const { page, errors } = demo;
   // 4000x3000, the size of a phone photo: its patch index alone would pass the memory budget.
@@ -228,19 +238,14 @@ test('a photo used whole synthesises, and the quality line says why it is not me
 
   // Feature-guided synthesis: the photo's features are detected in the worker, not on the page
   // (13.5 s there held the page from the panel's first draw on), then drawn, edited and used.
-  let started = Date.now();
+  const started = Date.now();
   await page.click('button[data-panel="features"]');
   await page.evaluate(() => 1);
   assert.ok(Date.now() - started < 3000, `the panel opened in ${Date.now() - started} ms`);
   assert.equal(await page.getAttribute('#fg-exemplar-caption', 'data-detected-here'), 'false');
   assert.match(await page.textContent('#fg-exemplar-caption'), /exemplar 4000×3000: detecting its features in the worker/);
   // The page answers while the worker detects.
-  for (let i = 0; i < 3; i++) {
-    started = Date.now();
-    await page.evaluate(() => 1);
-    assert.ok(Date.now() - started < 1000, `the page answered in ${Date.now() - started} ms`);
-    await page.waitForTimeout(300);
-  }
+  await answersMeanwhile(page, 3, 300);
   await page.waitForSelector('#fg-exemplar-caption[data-map-ready="true"]', { timeout: 120_000 });
   const caption = await page.textContent('#fg-exemplar-caption');
   assert.match(caption, /^exemplar features: \d+ pixels \(the 4000×3000 photo's map, detected and edited in the worker\)$/);
@@ -273,12 +278,7 @@ test('a photo used whole synthesises, and the quality line says why it is not me
   await page.fill('#fg-patch', '32');
   await page.click('#run');
   // The page answers while the worker synthesises.
-  for (let i = 0; i < 4; i++) {
-    started = Date.now();
-    await page.evaluate(() => 1);
-    assert.ok(Date.now() - started < 1000, `the page answered in ${Date.now() - started} ms`);
-    await page.waitForTimeout(500);
-  }
+  await answersMeanwhile(page, 4, 500);
   await page.waitForSelector('body[data-features-done="true"]', { timeout: 180_000 });
   assert.ok(Number(await page.getAttribute('body', 'data-feature-patches')) >= 1);
   // Both broken-feature counts are measured, against the worker's map of the photo.
