@@ -316,9 +316,15 @@ export function createPanel(ui) {
         ui.$('fg-readout').textContent = `setting up: the feature index of the ${width}×${height} exemplar` +
           (map ? '' : ' (its features are being detected: a photo takes several seconds)');
         const guide = await detecting;
-        synthesis = await made(() => (guide
-          ? guide.synthesis(options(), FEATURE_VIEWS)
-          : remoteSession('FeatureSynthesis', [ui.exemplar(), options()], FEATURE_VIEWS)));
+        try {
+          synthesis = await made(() => (guide
+            ? guide.synthesis(options(), FEATURE_VIEWS)
+            : remoteSession('FeatureSynthesis', [ui.exemplar(), options()], FEATURE_VIEWS)));
+        } catch (error) {
+          // A new exemplar or threshold freed the map while the session was being made.
+          if (guide && guide !== map) return null;
+          throw error;
+        }
         if (!synthesis) return null;
         if (anatomyOn()) await synthesis.send('setAnatomy', true);
       }
