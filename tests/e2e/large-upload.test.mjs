@@ -257,8 +257,9 @@ test('a photo used whole synthesises, and the quality line says why it is not me
   // Paint a curve across the photo in one fast move: the worker's map gains a gapless stroke
   // (about 0.6 of 4000 map pixels), and the view shows it.
   await page.check('input[name="fg-brush"][value="paint"]');
+  // The 140x105 view is contained in the 140x140 box: 17.5 pixels above and below it.
   const box = await page.locator('#fg-exemplar').boundingBox();
-  const y = box.y + box.height * 0.37;
+  const y = box.y + (box.height - 105) / 2 + 105 * 0.37;
   await page.mouse.move(box.x + box.width * 0.2, y);
   await page.mouse.down();
   await page.mouse.move(box.x + box.width * 0.8, y, { steps: 2 });

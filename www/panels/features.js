@@ -151,8 +151,18 @@ export function createPanel(ui) {
   function paintAt(event, start) {
     const mode = document.querySelector('input[name="fg-brush"]:checked').value;
     if (mode === 'off' || !map) return;
-    const box = ui.$('fg-exemplar').getBoundingClientRect();
-    if (!(box.width > 0 && box.height > 0)) return;
+    // The map as shown: the canvas's box with the picture contained in it (object-fit), so a
+    // map of another shape than the square box keeps its proportions.
+    const canvas = ui.$('fg-exemplar');
+    const outer = canvas.getBoundingClientRect();
+    const fit = Math.min(outer.width / canvas.width, outer.height / canvas.height);
+    if (!(fit > 0)) return;
+    const box = {
+      left: outer.left + (outer.width - canvas.width * fit) / 2,
+      top: outer.top + (outer.height - canvas.height * fit) / 2,
+      width: canvas.width * fit,
+      height: canvas.height * fit,
+    };
     const x = ((event.clientX - box.left) / box.width) * map.width;
     const y = ((event.clientY - box.top) / box.height) * map.height;
     const from = start || !lastPaint ? [x, y] : lastPaint;
