@@ -35,6 +35,37 @@ function exemplarView(exemplar, view) {
 }
 
 /**
+ * Draws an RGBA feature view of `width` x `height` (curves opaque, the rest transparent) on
+ * `canvas` at its view size for `side` device pixels: each view pixel shows a curve pixel of its
+ * footprint, as FeatureMap.scaledView does for a map (the synthesised map of a 256x256 output
+ * shown 140 pixels wide lost every other curve pixel to the browser's scaling).
+ */
+export function drawCurves(canvas, rgba, width, height, side) {
+  const view = viewSize(width, height, side);
+  const out = new ImageData(view.width, view.height);
+  for (let ty = 0; ty < view.height; ty++) {
+    const y0 = Math.floor((ty * height) / view.height);
+    const y1 = Math.min(height, Math.max(y0 + 1, Math.floor(((ty + 1) * height) / view.height)));
+    for (let tx = 0; tx < view.width; tx++) {
+      const x0 = Math.floor((tx * width) / view.width);
+      const x1 = Math.min(width, Math.max(x0 + 1, Math.floor(((tx + 1) * width) / view.width)));
+      search: for (let y = y0; y < y1; y++) {
+        for (let x = x0; x < x1; x++) {
+          const i = (y * width + x) * 4;
+          if (rgba[i + 3]) {
+            out.data.set(rgba.subarray(i, i + 4), (ty * view.width + tx) * 4);
+            break search;
+          }
+        }
+      }
+    }
+  }
+  canvas.width = view.width;
+  canvas.height = view.height;
+  canvas.getContext('2d').putImageData(out, 0, 0);
+}
+
+/**
  * Detects the map of `exemplar` with `options` ({ features, threshold }), on the page or in the
  * worker by its size, to be shown `viewSide` device pixels long. Resolves to { width, height,
  * count, here, draw(canvas), stroke(...), synthesis(options, spec), broken(session), free() }.
@@ -43,13 +74,17 @@ export async function detectExemplarMap(exemplar, options, viewSide) {
   const { width, height } = exemplar;
   const here = width * height <= PAGE_DETECT_PIXELS;
   const view = viewSize(width, height, viewSide);
-  const backdrop = here ? exemplar : exemplarView(exemplar, view);
+  const backdrop = exemplarView(exemplar, view);
   const local = here ? new FeatureMap(exemplar, options) : null;
   const remote = here ? null : await remoteSession('FeatureMap', [exemplar, options], { getters: ['count'] });
   let overlay = null;
   const fetchOverlay = async () => {
-    overlay = here ? null : await remote.send('scaledView', view.width, view.height);
-    if (remote) await remote.refresh();
+    if (here) {
+      overlay = local.scaledView(view.width, view.height);
+      return;
+    }
+    overlay = await remote.send('scaledView', view.width, view.height);
+    await remote.refresh();
   };
   await fetchOverlay();
   // Strokes go to the worker in order; the view is fetched again after the last one in flight.
@@ -64,17 +99,13 @@ export async function detectExemplarMap(exemplar, options, viewSide) {
 
     /** The exemplar dimmed, with its curves coloured by orientation bucket. */
     draw(canvas) {
-      if (here) drawInto(canvas, exemplar);
-      else {
-        canvas.width = view.width;
-        canvas.height = view.height;
-        canvas.getContext('2d').drawImage(backdrop, 0, 0);
-      }
+      canvas.width = view.width;
+      canvas.height = view.height;
       const ctx = canvas.getContext('2d');
+      ctx.drawImage(backdrop, 0, 0);
       ctx.fillStyle = 'rgba(0,0,0,0.45)';
       ctx.fillRect(0, 0, canvas.width, canvas.height);
-      if (here) drawOverlay(canvas, width, height, (b) => local.renderInto(b));
-      else drawOverlay(canvas, view.width, view.height, new ImageData(overlay, view.width, view.height));
+      drawOverlay(canvas, view.width, view.height, new ImageData(overlay, view.width, view.height));
     },
 
     /**
@@ -84,6 +115,7 @@ export async function detectExemplarMap(exemplar, options, viewSide) {
     stroke(x0, y0, x1, y1, radius, on, drawn) {
       if (here) {
         local.paintLine(x0, y0, x1, y1, radius, on);
+        fetchOverlay();
         drawn();
         return Promise.resolve();
       }

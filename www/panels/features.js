@@ -11,7 +11,7 @@ import { explain } from '../lib/explain.js';
 import { paintable } from '../lib/keyboard-brush.js';
 import { remoteSession } from '../lib/worker.js';
 import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
-import { detectExemplarMap, PAGE_DETECT_PIXELS } from './features-map.js';
+import { detectExemplarMap, drawCurves, PAGE_DETECT_PIXELS } from './features-map.js';
 
 export const id = 'features';
 export const title = 'Feature-guided';
@@ -49,6 +49,12 @@ const SIDE_HTML = `
   ${ANATOMY_HTML.replace('C(t), eq. 2', 'colour cost C(t), eq. 2; the feature cost re-ranks its best')
     .replace('Right: the chance eq. 3 gives each (bright: likely).',
       'Right: the chance eq. 3 gives each of the best offsets by colour, from colour plus feature cost (section 3; the rest cannot be drawn).')}`;
+
+/** The longer side `canvas` is shown at, in device pixels (the maps' boxes are 140 CSS pixels). */
+function shownSide(canvas) {
+  const box = canvas.getBoundingClientRect();
+  return Math.round(Math.max(box.width, box.height, 64) * (window.devicePixelRatio || 1));
+}
 
 export function createPanel(ui) {
   let map = null;
@@ -100,10 +106,7 @@ export function createPanel(ui) {
     const { width, height } = mapOf;
     const caption = ui.$('fg-exemplar-caption');
     caption.dataset.mapReady = 'false';
-    // The view's side in device pixels (the canvas is shown 140 CSS pixels square).
-    const shown = ui.$('fg-exemplar').getBoundingClientRect();
-    const side = Math.round(Math.max(shown.width, shown.height, 64) * (window.devicePixelRatio || 1));
-    const job = detectExemplarMap(mapOf, detectOptions(), side).then((m) => {
+    const job = detectExemplarMap(mapOf, detectOptions(), shownSide(ui.$('fg-exemplar'))).then((m) => {
       if (detecting !== job) {
         m.free();
         return null;
@@ -363,7 +366,9 @@ export function createPanel(ui) {
       if (event.phase === 'features') {
         zoomCanvas();
         drawPlacement();
-        drawInto(ui.$('fg-map'), { width: synthesis.width, height: synthesis.height, renderInto: (b) => synthesis.view('renderFeatures', b) });
+        const curves = new Uint8ClampedArray(synthesis.width * synthesis.height * 4);
+        synthesis.view('renderFeatures', curves);
+        drawCurves(ui.$('fg-map'), curves, synthesis.width, synthesis.height, shownSide(ui.$('fg-map')));
         const how = event.colourOnly ? 'colour only (no oriented features to match)'
           : `feature cost ${event.featureCost.toFixed(2)} · colour ${event.colourCost.toExponential(2)}`;
         ui.$('fg-readout').textContent = `patch ${event.patch + 1}/${event.patches} from (${event.sourceX}, ${event.sourceY}) · ` +
