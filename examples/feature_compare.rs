@@ -13,8 +13,8 @@
 
 use std::time::Instant;
 use texsynth::core::{Image, decode, encode_png};
-use texsynth::methods::features::broken::{broken_features, ends_per_thousand};
-use texsynth::methods::features::hybrid::{SourceFeatures, canvas_features};
+use texsynth::methods::features::broken::{broken_features, carried_broken};
+use texsynth::methods::features::hybrid::carried_mask;
 use texsynth::methods::features::{
     DetectOptions, FeatureOptions, FeaturePlacement, FeatureSynthesis,
 };
@@ -48,8 +48,6 @@ fn main() {
     for name in &names {
         let exemplar = load(name);
         let own = texsynth::methods::features::detect(&exemplar, detect).expect("detect");
-        let own_ends = ends_per_thousand(&own.mask, own.width, own.height);
-        let own_features = [SourceFeatures::new(own)];
         let mut rows = [[0.0f64; 6]; 2];
         for &seed in &seeds {
             let start = Instant::now();
@@ -92,9 +90,7 @@ fn main() {
                 if std::env::var("KINDS").is_ok() {
                     eprintln!("{name} seed {seed}: {kinds:?}");
                 }
-                let carried =
-                    ends_per_thousand(f.feature_mask(), f.image().width(), f.image().height());
-                (f.image().clone(), carried - own_ends)
+                (f.image().clone(), f.carried_broken())
             };
             let (out_f, carried_f) = out_f;
             let t_f = start.elapsed().as_secs_f64() * 1e3;
@@ -110,8 +106,13 @@ fn main() {
             while !g.step().expect("step").done {}
             let t_g = start.elapsed().as_secs_f64() * 1e3;
             let out_g = g.output().expect("output");
-            let (mask_g, _) = canvas_features(g.synthesis(), &own_features);
-            let carried_g = ends_per_thousand(&mask_g, out_g.width(), out_g.height()) - own_ends;
+            let mask_g = carried_mask(g.synthesis(), &[&own.mask]);
+            let carried_g = carried_broken(
+                &mask_g,
+                (out_g.width(), out_g.height()),
+                &own.mask,
+                (own.width, own.height),
+            );
             for (row, (out, t, carried)) in rows
                 .iter_mut()
                 .zip([(&out_f, t_f, carried_f), (&out_g, t_g, carried_g)])

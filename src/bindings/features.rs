@@ -428,6 +428,14 @@ impl FeatureSynthesis {
         ]))
     }
 
+    /// The broken-feature count on the synthesised feature map: its curve ends per 1000 curve
+    /// pixels above those of the exemplar map it carries (the curves the seams cut; compare
+    /// `GraphcutTextures.carriedBrokenFeatures(mask)` with the same map's mask).
+    #[wasm_bindgen(js_name = carriedBrokenFeatures)]
+    pub fn carried_broken_features(&self) -> f64 {
+        self.synthesis.carried_broken()
+    }
+
     /// The estimated peak memory of this session, in bytes: what the constructor compared with
     /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
     #[wasm_bindgen(getter, js_name = memoryEstimate)]

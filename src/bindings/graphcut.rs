@@ -10,6 +10,8 @@ use super::exemplar::Exemplar;
 use super::options::{OptionsReader, object};
 use super::pixels::{render_into, write_rgba};
 use crate::core::Error;
+use crate::methods::features::broken::carried_broken;
+use crate::methods::features::hybrid::carried_mask;
 use crate::methods::graphcut::anatomy::{CostSurface, GraphView};
 use crate::methods::graphcut::placement::Region;
 use crate::methods::graphcut::teaching::{label_map, seam_heat_map, seam_overlay};
@@ -169,6 +171,43 @@ impl GraphcutTextures {
     #[wasm_bindgen(getter, js_name = memoryEstimate)]
     pub fn memory_estimate(&self) -> f64 {
         self.session.synthesis().working_set().bytes() as f64
+    }
+
+    /// The broken-feature count on this output's carried feature map: every made pixel carries
+    /// the curve of the exemplar pixel it shows, from `featureMask` (one byte per exemplar pixel,
+    /// non-zero on a curve: `FeatureMap.toMask()`), and the count is its curve ends per 1000
+    /// curve pixels above the mask's own: the curves the seams cut. A session with deformed
+    /// sources (rotations, mirrors, scales) has no mask for them and is refused.
+    #[wasm_bindgen(js_name = carriedBrokenFeatures)]
+    pub fn carried_broken_features(&self, feature_mask: &[u8]) -> JsResult<f64> {
+        let s = self.session.synthesis();
+        if s.sources.len() != 1 {
+            return Err(Error::InvalidParameter {
+                name: "featureMask",
+                reason: format!(
+                    "the carried count needs a session of the exemplar alone; this one has {} sources (deformations)",
+                    s.sources.len()
+                ),
+            }
+            .into());
+        }
+        let (sw, sh) = (s.sources[0].width(), s.sources[0].height());
+        if feature_mask.len() != sw * sh {
+            return Err(Error::LengthMismatch {
+                what: "featureMask",
+                expected: sw * sh,
+                actual: feature_mask.len(),
+            }
+            .into());
+        }
+        let mask: Vec<bool> = feature_mask.iter().map(|&b| b != 0).collect();
+        let carried = carried_mask(s, &[&mask]);
+        Ok(carried_broken(
+            &carried,
+            (s.canvas.width, s.canvas.height),
+            &mask,
+            (sw, sh),
+        ))
     }
 
     #[wasm_bindgen(getter)]

@@ -4,7 +4,8 @@
 
 use js_sys::{Array, Uint8ClampedArray};
 use texsynth::bindings::{
-    Exemplar, FeatureMap, FeatureSynthesis, detect_features, measure_broken_features,
+    Exemplar, FeatureMap, FeatureSynthesis, GraphcutTextures, detect_features,
+    measure_broken_features,
 };
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
@@ -236,4 +237,50 @@ fn a_constructed_map_strokes_and_counts_broken_features_as_measured() {
     assert!((0..128).all(|x| shown(&big, 128, x, 47) != (34..48).contains(&x)));
     assert!(error_message(map.scaled_view(0, 5)).contains("width"));
     assert!(error_message(map.scaled_view(5, 5000)).contains("height"));
+}
+
+#[wasm_bindgen_test]
+fn carried_counts_score_both_methods_on_the_same_map() {
+    let ex = Exemplar::from_bytes(TILES_64).unwrap();
+    let map = detect_features(&ex, JsValue::UNDEFINED).unwrap();
+    let size = || {
+        options(&[
+            ("outputWidth", 96.into()),
+            ("outputHeight", 96.into()),
+            ("seed", 2.into()),
+        ])
+    };
+    let mut fg = FeatureSynthesis::with_feature_map(&ex, &map, size()).unwrap();
+    while !fg.done() {
+        fg.step().unwrap();
+    }
+    let mut gc = GraphcutTextures::new(&ex, size()).unwrap();
+    while !gc.done() {
+        gc.step().unwrap();
+    }
+    let mask = map.to_mask().to_vec();
+    let (ours, theirs) = (
+        fg.carried_broken_features(),
+        gc.carried_broken_features(&mask).unwrap(),
+    );
+    assert!(ours.is_finite() && theirs.is_finite(), "{ours} {theirs}");
+    // Ends per 1000 curve pixels: a tiles output has curves, and cannot end more than every one.
+    assert!(ours.abs() < 1000.0 && theirs.abs() < 1000.0);
+    // No curves carried: nothing to count.
+    assert_eq!(
+        gc.carried_broken_features(&vec![0u8; 64 * 64]).unwrap(),
+        0.0
+    );
+    assert!(error_message(gc.carried_broken_features(&mask[1..])).contains("featureMask"));
+    let mut deformed = GraphcutTextures::new(
+        &ex,
+        options(&[
+            ("outputWidth", 64.into()),
+            ("outputHeight", 64.into()),
+            ("mirror", true.into()),
+        ]),
+    )
+    .unwrap();
+    deformed.step().unwrap();
+    assert!(error_message(deformed.carried_broken_features(&mask)).contains("sources"));
 }

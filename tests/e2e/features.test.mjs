@@ -49,6 +49,11 @@ test('feature-guided synthesis runs beside plain graph cut with both broken-feat
   const ours = Number(await page.getAttribute('#fg-quality', 'data-broken') ?? NaN);
   const theirs = Number(await page.getAttribute('#fg-graphcut-caption', 'data-broken') ?? NaN);
   assert.ok(Number.isFinite(ours) && Number.isFinite(theirs), `${ours} ${theirs}`);
+  // And on the carried (synthesised) maps: the curves each method's seams cut.
+  const oursSeams = Number(await page.getAttribute('#fg-quality', 'data-broken-seams') ?? NaN);
+  const theirsSeams = Number(await page.getAttribute('#fg-graphcut-caption', 'data-broken-seams') ?? NaN);
+  assert.ok(Number.isFinite(oursSeams) && Number.isFinite(theirsSeams), `${oursSeams} ${theirsSeams}`);
+  assert.match(await page.textContent('#fg-graphcut-caption'), /broken features -?\d+\.\d, at seams -?\d+\.\d \(feature-guided: -?\d+\.\d, at seams -?\d+\.\d; lower is better\)/);
   assert.doesNotMatch(await page.textContent('#fg-graphcut-caption'), /NaN/);
   const pixels = await canvasPixels(page, 'fg-map');
   assert.ok(pixels.some((v, i) => i % 4 === 3 && v === 255), 'the synthesised feature map is drawn');

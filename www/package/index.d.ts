@@ -273,6 +273,13 @@ export class GraphcutTextures implements Steppable<GraphcutTexturesEvent> {
   constructor(exemplar: Exemplar, options?: GraphcutTexturesOptions);
   /** The estimated peak working set in bytes (what the memory budget is checked against). */
   readonly memoryEstimate: number;
+  /**
+   * The broken-feature count on the output's carried feature map (each made pixel carries the
+   * curve of the exemplar pixel it shows, from `featureMask`, one byte per exemplar pixel:
+   * `FeatureMap.toMask()`): curve ends per 1000 curve pixels above the mask's own, the curves
+   * seams cut. Refused for a session with deformed sources.
+   */
+  carriedBrokenFeatures(featureMask: Bytes): number;
   free(): void;
   [Symbol.dispose](): void;
   [Symbol.iterator](): Iterator<GraphcutTexturesEvent>;
@@ -718,6 +725,8 @@ export class FeatureSynthesis implements Steppable<FeatureSynthesisEvent> {
   /** The estimated peak working set in bytes (what the memory budget is checked against). */
   readonly memoryEstimate: number;
   static withFeatureMap(exemplar: Exemplar, map: FeatureMap, options?: FeatureSynthesisOptions): FeatureSynthesis;
+  /** The broken-feature count on the synthesised feature map (see `GraphcutTextures.carriedBrokenFeatures`). */
+  carriedBrokenFeatures(): number;
   free(): void;
   [Symbol.dispose](): void;
   [Symbol.iterator](): Iterator<FeatureSynthesisEvent>;

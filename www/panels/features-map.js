@@ -68,7 +68,8 @@ export function drawCurves(canvas, rgba, width, height, side) {
 /**
  * Detects the map of `exemplar` with `options` ({ features, threshold }), on the page or in the
  * worker by its size, to be shown `viewSide` device pixels long. Resolves to { width, height,
- * count, here, draw(canvas), stroke(...), synthesis(options, spec), broken(session), free() }.
+ * count, here, draw(canvas), stroke(...), synthesis(options, spec), mask(), broken(session),
+ * free() }.
  */
 export async function detectExemplarMap(exemplar, options, viewSide) {
   const { width, height } = exemplar;
@@ -137,6 +138,11 @@ export async function detectExemplarMap(exemplar, options, viewSide) {
         return remoteSession('FeatureSynthesis', [exemplar, { ...synthesisOptions, featureMask: local.toMask() }], spec);
       }
       return remoteSession('FeatureSynthesis.withFeatureMap', [exemplar, remote, synthesisOptions], spec);
+    },
+
+    /** The map's curves as edited, one byte per exemplar pixel (FeatureMap.toMask()). */
+    mask() {
+      return here ? Promise.resolve(local.toMask()) : remote.send('toMask');
     },
 
     /** The broken-feature count of a session's output against the exemplar as detected. */

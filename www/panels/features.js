@@ -63,7 +63,7 @@ export function createPanel(ui) {
   let graphcut = null;
   let pending = null;
   let painting = false;
-  let oursBroken = Promise.resolve(null);
+  let oursBroken = Promise.resolve({ detected: null, seams: null });
   // With the placement anatomy on (graph-cut placement), each step also brings back the
   // placement's cost surface and seam graph (recorded by the session only when asked).
   // The scan placement warps its patches (section 2.2); graph-cut placement does not.
@@ -252,14 +252,23 @@ export function createPanel(ui) {
   }
 
   /**
-   * The session's broken-feature count against the exemplar's map as detected, or null where
-   * there is no map (its detection failed).
+   * The session's two broken-feature counts, or nulls where there is no map (its detection
+   * failed): `detected`, on a map detected on the output against the exemplar's as detected;
+   * `seams`, on the carried (synthesised) map against the map it carries, the curves its seams
+   * cut (feature-guided synthesis grows that map; graph cut's is made from its canvas with the
+   * same map's mask). Both lower is better.
    */
-  function broken(session) {
-    return map ? map.broken(session) : Promise.resolve(null);
+  async function broken(session, kind) {
+    if (!map) return { detected: null, seams: null };
+    const detected = map.broken(session);
+    const seams = kind === 'features' ? session.send('carriedBrokenFeatures')
+      : map.mask().then((mask) => session.send('carriedBrokenFeatures', mask));
+    return { detected: await detected, seams: await seams };
   }
 
   const brokenText = (b) => (b === null ? `not measured (${detectError ?? 'no feature map'})` : b.toFixed(1));
+  const countsText = ({ detected, seams }) => (detected === null ? brokenText(null)
+    : `${brokenText(detected)}, at seams ${brokenText(seams)}`);
 
   function resetSessions() {
     synthesis?.free();
@@ -378,11 +387,12 @@ export function createPanel(ui) {
         if (event.featuresDone) {
           const quality = ui.$('fg-quality');
           const scored = synthesis;
-          oursBroken = broken(synthesis);
+          oursBroken = broken(synthesis, 'features');
           Promise.all([oursBroken, showQualityOrWhy(quality, ui.exemplar(), synthesis, () => synthesis === scored)]).then(([b]) => {
             if (synthesis !== scored) return;
-            quality.dataset.broken = String(b);
-            quality.textContent += ` · broken features ${brokenText(b)}`;
+            quality.dataset.broken = String(b.detected);
+            quality.dataset.brokenSeams = String(b.seams);
+            quality.textContent += ` · broken features ${countsText(b)}`;
             if (!ui.$('fg-compare').checked) document.body.dataset.featuresDone = 'true';
           });
         }
@@ -390,11 +400,13 @@ export function createPanel(ui) {
         drawInto(ui.$('fg-graphcut'), graphcut);
         if (event.done) {
           const scored = graphcut;
-          Promise.all([broken(graphcut), oursBroken]).then(([b, ours]) => {
+          Promise.all([broken(graphcut, 'graphcut'), oursBroken]).then(([b, ours]) => {
             if (graphcut !== scored) return;
-            ui.$('fg-graphcut-caption').textContent = `plain graph cut, same exemplar and seed · broken features ${brokenText(b)}` +
-              (b === null ? '' : ` (feature-guided: ${brokenText(ours)}; lower is better)`);
-            ui.$('fg-graphcut-caption').dataset.broken = String(b);
+            const caption = ui.$('fg-graphcut-caption');
+            caption.textContent = `plain graph cut, same exemplar and seed · broken features ${countsText(b)}` +
+              (b.detected === null ? '' : ` (feature-guided: ${countsText(ours)}; lower is better)`);
+            caption.dataset.broken = String(b.detected);
+            caption.dataset.brokenSeams = String(b.seams);
             document.body.dataset.featuresDone = 'true';
           });
         }

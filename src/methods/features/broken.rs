@@ -49,6 +49,22 @@ impl BrokenBaseline {
     }
 }
 
+/// The broken-feature count on a carried map: curve ends per 1000 curve pixels of `carried` (an
+/// output's synthesised feature map, `width` x `height`: every pixel carries the curve of the
+/// source pixel it shows) minus those of `source`, the mask it carried. It holds only the source's
+/// curves, so its ends are curves that seams cut (and the output's border), not what a detector
+/// finds in the output's pixels (grain, blur).
+#[must_use]
+pub fn carried_broken(
+    carried: &[bool],
+    (width, height): (usize, usize),
+    source: &[bool],
+    (source_width, source_height): (usize, usize),
+) -> f64 {
+    ends_per_thousand(carried, width, height)
+        - ends_per_thousand(source, source_width, source_height)
+}
+
 /// The broken-feature count of `output` against `exemplar`.
 pub fn broken_features(exemplar: &Image, output: &Image, options: DetectOptions) -> Result<f64> {
     let own = detect(exemplar, options)?;
@@ -58,6 +74,30 @@ pub fn broken_features(exemplar: &Image, output: &Image, options: DetectOptions)
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_carried_map_counts_the_curves_seams_cut() {
+        // The source: three whole horizontal lines. Carried whole, the count is the border's
+        // alone (0 when output and source are the same); carried with one line cut, two more ends.
+        let (w, h) = (40, 24);
+        let source = FeatureMap {
+            width: w,
+            height: h,
+            mask: (0..w * h).map(|i| (i / w) % 8 == 4).collect(),
+            angle: vec![0.0; w * h],
+            response: vec![1.0; w * h],
+            threshold: 0.5,
+        };
+        assert_eq!(
+            carried_broken(&source.mask, (w, h), &source.mask, (w, h)),
+            0.0
+        );
+        let mut cut = source.mask.clone();
+        cut[12 * w + 20] = false;
+        let curve_pixels = 3.0 * w as f64 - 1.0;
+        let expected = 1000.0 * 8.0 / curve_pixels - 1000.0 * 6.0 / (3.0 * w as f64);
+        assert!((carried_broken(&cut, (w, h), &source.mask, (w, h)) - expected).abs() < 1e-9);
+    }
 
     #[test]
     fn broken_lines_count_more_ends_than_whole_ones() {

@@ -106,6 +106,29 @@ fn canvas_feature(s: &Synthesis, features: &[SourceFeatures], i: usize) -> (bool
     }
 }
 
+/// The carried feature map of a graph-cut canvas from the sources' curves alone: `masks[k]` is
+/// source k's mask (row-major at its width), and a made pixel carries the curve of the source
+/// pixel it shows. Sources past `masks` carry none.
+#[must_use]
+pub fn carried_mask(s: &Synthesis, masks: &[&[bool]]) -> Vec<bool> {
+    let w = s.canvas.width;
+    (0..w * s.canvas.height)
+        .map(|i| {
+            let label = s.canvas.label[i];
+            if label == UNCOVERED {
+                return false;
+            }
+            let patch = s.canvas.patches[label as usize];
+            let Some(mask) = masks.get(patch.source as usize) else {
+                return false;
+            };
+            let sw = s.sources[patch.source as usize].width();
+            s.source_coords(patch, i % w, i / w)
+                .is_some_and(|(sx, sy)| mask[sy * sw + sx])
+        })
+        .collect()
+}
+
 /// A rectangle of output pixels, `x0..x1` by `y0..y1`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Rect {
@@ -554,6 +577,34 @@ mod tests {
         let e = index.cost_in_exemplar(&points, n, inside, TAU_MATCH, 12.0);
         assert!((l - e).abs() < 1e-6, "{l} {e}");
         assert!(l > 0.0);
+    }
+
+    #[test]
+    fn the_carried_mask_is_the_canvas_feature_map() {
+        let ex = sample("tiles_64");
+        let map = detect(&ex, DetectOptions::default()).unwrap();
+        let mut g = Session::new(
+            &ex,
+            Options {
+                output_width: 96,
+                output_height: 80,
+                seed: 4,
+                ..Options::default()
+            },
+        )
+        .unwrap();
+        while !g.step().unwrap().done {}
+        let s = g.synthesis();
+        let masks: [&[bool]; 1] = [&map.mask];
+        let carried = carried_mask(s, &masks);
+        let (oracle, _) = canvas_features(s, &[SourceFeatures::new(map.clone())]);
+        assert_eq!(
+            carried, oracle,
+            "the mask alone carries what the full features do"
+        );
+        assert!(carried.iter().filter(|&&m| m).count() > 500);
+        // A source without a mask carries nothing.
+        assert!(carried_mask(s, &[]).iter().all(|&m| !m));
     }
 
     #[test]

@@ -279,6 +279,19 @@ impl FeatureSynthesis {
         Ok(event)
     }
 
+    /// The broken-feature count on the synthesised feature map (`broken::carried_broken`):
+    /// curve ends per 1000 curve pixels above the exemplar map's.
+    #[must_use]
+    pub fn carried_broken(&self) -> f64 {
+        let map = self.exemplar_map();
+        super::broken::carried_broken(
+            &self.feature,
+            (self.output.width(), self.output.height()),
+            &map.mask,
+            (map.width, map.height),
+        )
+    }
+
     /// One step of graph-cut placement with the feature cost.
     /// The graph-cut session that places the patches (graph-cut placement only): its placement
     /// anatomy (cost surface, seam graph) is the page's view of a feature-guided placement.
