@@ -14,7 +14,7 @@
 use std::time::Instant;
 use texsynth::core::{Image, decode, encode_png};
 use texsynth::methods::features::broken::{broken_features, carried_broken};
-use texsynth::methods::features::hybrid::carried_mask;
+use texsynth::methods::features::carried::carried_mask;
 use texsynth::methods::features::{
     DetectOptions, FeatureOptions, FeaturePlacement, FeatureSynthesis,
 };

@@ -11,7 +11,7 @@ use super::options::{OptionsReader, object};
 use super::pixels::{render_into, write_rgba};
 use crate::core::Error;
 use crate::methods::features::broken::carried_broken;
-use crate::methods::features::hybrid::carried_mask;
+use crate::methods::features::carried::carried_mask;
 use crate::methods::graphcut::anatomy::{CostSurface, GraphView};
 use crate::methods::graphcut::placement::Region;
 use crate::methods::graphcut::teaching::{label_map, seam_heat_map, seam_overlay};

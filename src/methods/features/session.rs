@@ -7,10 +7,11 @@
 //! says so.
 
 use super::alignment::{WarpKind, align};
+use super::carried::update_canvas_features;
 #[cfg(test)]
 use super::detect::DetectOptions;
 use super::detect::{FeatureMap, detect};
-use super::hybrid::{GraphcutFeatures, HybridOptions, update_canvas_features};
+use super::hybrid::{GraphcutFeatures, HybridOptions};
 use super::matching::{ContextFeature, FeatureIndex, Region, TAU_MATCH};
 use super::memory::{METHOD, working_set};
 use super::options::{FeatureOptions, FeaturePlacement};

@@ -165,7 +165,7 @@ mod graphcut_placement {
             let synthesis = g.session.synthesis();
             covered_steps += usize::from(synthesis.canvas.is_covered());
             let (mask, angle) =
-                crate::methods::features::hybrid::canvas_features(synthesis, &g.features);
+                crate::methods::features::carried::canvas_features(synthesis, &g.features);
             assert_eq!(s.feature_mask(), &mask[..]);
             assert_eq!(s.feature_angles(), &angle[..]);
         }
