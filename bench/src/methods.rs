@@ -73,6 +73,10 @@ pub struct Run {
     pub steps: usize,
     pub max_step_ms: f64,
     pub output: Image,
+    /// The broken-feature count at seams (on the carried feature map, `features::carried`), for
+    /// the patch-based methods whose canvas says which exemplar pixel each output pixel shows:
+    /// graph cut (without deformed sources) and feature-guided synthesis. Not timed.
+    pub seams: Option<f64>,
 }
 
 /// Runs one of texsynth's methods: the timed part is session construction (validation, pyramids,
@@ -106,6 +110,7 @@ pub fn run_ours(
                 steps,
                 max_step_ms,
                 output,
+                seams: None,
             })
         }
         Method::GraphcutRandom | Method::GraphcutEntire | Method::GraphcutSub => {
@@ -126,11 +131,13 @@ pub fn run_ours(
             let (steps, max_step_ms) = step_all(|| Ok(session.step()?.done))?;
             let total_ms = ms(start);
             let output = session.output().map_err(err)?;
+            let seams = graphcut_seams(exemplar, session.synthesis()).map_err(err)?;
             Ok(Run {
                 total_ms,
                 steps,
                 max_step_ms,
                 output,
+                seams,
             })
         }
         Method::Features => {
@@ -150,10 +157,31 @@ pub fn run_ours(
                 steps,
                 max_step_ms,
                 output: session.image().clone(),
+                seams: Some(session.carried_broken()),
             })
         }
         Method::Peer => unreachable!("the peer runs through peer::run"),
     }
+}
+
+/// Graph cut's count at seams: the exemplar's detected curves carried through its canvas (None
+/// with deformed sources, which have no map).
+fn graphcut_seams(
+    exemplar: &Image,
+    synthesis: &graphcut::synthesis::Synthesis,
+) -> texsynth::core::Result<Option<f64>> {
+    if synthesis.sources.len() != 1 {
+        return Ok(None);
+    }
+    let map = features::detect(exemplar, features::DetectOptions::default())?;
+    let carried = features::carried::carried_mask(synthesis, &[&map.mask]);
+    let (w, h) = (synthesis.canvas.width, synthesis.canvas.height);
+    Ok(Some(features::broken::carried_broken(
+        &carried,
+        (w, h),
+        &map.mask,
+        (map.width, map.height),
+    )))
 }
 
 /// Calls `step` until it reports done; returns the number of steps and the longest one in ms.

@@ -41,5 +41,6 @@ pub fn run(exemplar: &Image, width: usize, height: usize, seed: u64) -> Result<R
         steps: 0,
         max_step_ms: total_ms,
         output,
+        seams: None,
     })
 }

@@ -170,6 +170,7 @@ fn figure_cells(exemplar: &str, method: &str, c: &Cell) -> Vec<String> {
         table::metric(c.histogram),
         table::flat(c.flat),
         c.broken.map_or(NONE.into(), |b| format!("{b:.1}")),
+        c.seams.map_or(NONE.into(), |b| format!("{b:.1}")),
         same.to_string(),
     ]
 }
@@ -226,6 +227,7 @@ pub fn render(report: &Report) -> String {
             "histogram",
             "flat",
             "broken",
+            "at seams",
             "wasm px",
         ],
         2,
@@ -351,14 +353,14 @@ pub fn write_files(report: &Report, dir: &Path) -> Result<(PathBuf, PathBuf), St
 
     let tsv = dir.join("results.tsv");
     let mut text = String::from(
-        "exemplar\tmethod\tseed\tplatform\ttotal_ms\tsteps\tmax_step_ms\tcoherence\tcompleteness\thistogram\tflat\tbroken\toutput_hash\n",
+        "exemplar\tmethod\tseed\tplatform\ttotal_ms\tsteps\tmax_step_ms\tcoherence\tcompleteness\thistogram\tflat\tbroken\tseams\toutput_hash\n",
     );
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
     for e in &report.results {
         for r in &e.runs {
             let _ = writeln!(
                 text,
-                "{}\t{}\t{}\tnative\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}",
+                "{}\t{}\t{}\tnative\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}",
                 e.exemplar,
                 e.method,
                 r.seed,
@@ -370,6 +372,7 @@ pub fn write_files(report: &Report, dir: &Path) -> Result<(PathBuf, PathBuf), St
                 r.histogram,
                 r.flat,
                 r.broken,
+                opt(r.seams),
                 r.output_hash
             );
             if r.wasm_ms.is_some() {
@@ -377,7 +380,7 @@ pub fn write_files(report: &Report, dir: &Path) -> Result<(PathBuf, PathBuf), St
                 // wasm output's identity with it is in results.json, wasm_identical).
                 let _ = writeln!(
                     text,
-                    "{}\t{}\t{}\twasm\t{}\t{}\t{}\t\t\t\t\t\t",
+                    "{}\t{}\t{}\twasm\t{}\t{}\t{}\t\t\t\t\t\t\t",
                     e.exemplar,
                     e.method,
                     r.seed,

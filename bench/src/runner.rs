@@ -123,6 +123,7 @@ pub fn run_exemplar(
             histogram: q.histogram,
             flat: q.flat,
             broken,
+            seams: t.run.seams,
             output_hash,
             wasm_ms: None,
             wasm_steps: None,

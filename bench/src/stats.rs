@@ -19,6 +19,8 @@ pub struct RunFigures {
     /// Broken-feature count (Wu & Yu's curves): curve ends per 1000 curve pixels above the
     /// exemplar's own; lower is better.
     pub broken: f64,
+    /// The same count at seams, on the carried feature map (graph cut and feature-guided only).
+    pub seams: Option<f64>,
     /// FNV-1a of the output's RGBA8 pixels (native).
     pub output_hash: String,
     pub wasm_ms: Option<f64>,
@@ -41,6 +43,7 @@ pub struct Cell {
     pub histogram: Option<f64>,
     pub flat: Option<f64>,
     pub broken: Option<f64>,
+    pub seams: Option<f64>,
     pub wasm_identical: Option<bool>,
 }
 
@@ -107,6 +110,7 @@ pub fn cell(runs: &[RunFigures]) -> Cell {
         histogram: mean(&of(|r| Some(r.histogram))),
         flat: mean(&of(|r| Some(r.flat))),
         broken: mean(&of(|r| Some(r.broken))),
+        seams: mean(&of(|r| r.seams)),
         wasm_identical: (!identical.is_empty()).then(|| identical.iter().all(|&b| b)),
     }
 }
@@ -127,6 +131,7 @@ pub fn summary(cells: &[&Cell]) -> Cell {
         histogram: of(|c| c.histogram),
         flat: of(|c| c.flat),
         broken: of(|c| c.broken),
+        seams: of(|c| c.seams),
         wasm_identical: (!identical.is_empty()).then(|| identical.iter().all(|&b| b)),
     }
 }
@@ -176,6 +181,7 @@ mod tests {
             histogram: 0.01,
             flat: 0.1,
             broken: 1.0,
+            seams: None,
             output_hash: String::new(),
             wasm_ms: Some(2.0 * ms),
             wasm_steps: Some(steps),
