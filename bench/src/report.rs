@@ -12,7 +12,7 @@ use crate::stats::{self, Cell, Ratios, RunFigures};
 use crate::table::{self, NONE, Table};
 
 /// What the figures mean; printed under the tables and stored in the JSON.
-pub const NOTES: [&str; 7] = [
+pub const NOTES: [&str; 8] = [
     "time: wall time of session construction plus all steps (decoding and file IO excluded), median over seeds; native is this binary (release, one thread), wasm is the package in Node",
     "ms/step: median over seeds of time / steps; max step: the longest single step of any seed (a page's worst frame); the peer runs as one call, so it has no steps (—)",
     "quality: mean over seeds of the library's metrics on the 8-bit output; lower is better for coherence, completeness and histogram",
@@ -20,6 +20,7 @@ pub const NOTES: [&str; 7] = [
     "goal: at least 3x faster than the peer (time ratio <= 0.33) with coherence and completeness ratios <= 1",
     "summary rows of the figures table are arithmetic means over exemplars (max for max step)",
     "flat: the detail metric, the share of output pixels whose 7x7 luminance standard deviation is below the exemplar's 10th percentile of it (the exemplar itself scores about 0.10; a washed-out output up to 1); texture optimization matches the output's histogram to the exemplar's, so its histogram distance is near 0 by construction",
+    "broken: curve ends per 1000 curve pixels of the feature map detected on the output, above the exemplar's own (Wu & Yu's curves; lower is better); at seams: the same on the carried map (each output pixel carries the exemplar's curve at the pixel it shows), the curves seams cut, for graph cut without deformations and feature-guided synthesis",
 ];
 
 #[derive(Serialize)]
