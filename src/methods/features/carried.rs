@@ -48,22 +48,26 @@ pub fn update_canvas_features(
     }
 }
 
-/// The feature and tangent output pixel `i` shows (none where unmade).
-pub(super) fn canvas_feature(s: &Synthesis, features: &[SourceFeatures], i: usize) -> (bool, f32) {
+/// The source and source pixel (index in its row-major pixels) output pixel `i` shows; None
+/// where unmade.
+fn shown_pixel(s: &Synthesis, i: usize) -> Option<(usize, usize)> {
     let w = s.canvas.width;
     let label = s.canvas.label[i];
     if label == UNCOVERED {
-        return (false, 0.0);
+        return None;
     }
     let patch = s.canvas.patches[label as usize];
-    match s.source_coords(patch, i % w, i / w) {
-        Some((sx, sy)) => {
-            let f = &features[patch.source as usize].map;
-            let j = sy * f.width + sx;
-            (f.mask[j], f.angle[j])
-        }
-        None => (false, 0.0),
-    }
+    let source = patch.source as usize;
+    let (sx, sy) = s.source_coords(patch, i % w, i / w)?;
+    Some((source, sy * s.sources[source].width() + sx))
+}
+
+/// The feature and tangent output pixel `i` shows (none where unmade).
+pub(super) fn canvas_feature(s: &Synthesis, features: &[SourceFeatures], i: usize) -> (bool, f32) {
+    shown_pixel(s, i).map_or((false, 0.0), |(source, j)| {
+        let f = &features[source].map;
+        (f.mask[j], f.angle[j])
+    })
 }
 
 /// The carried feature map of a graph-cut canvas from the sources' curves alone: `masks[k]` is
@@ -71,20 +75,10 @@ pub(super) fn canvas_feature(s: &Synthesis, features: &[SourceFeatures], i: usiz
 /// pixel it shows. Sources past `masks` carry none.
 #[must_use]
 pub fn carried_mask(s: &Synthesis, masks: &[&[bool]]) -> Vec<bool> {
-    let w = s.canvas.width;
-    (0..w * s.canvas.height)
+    (0..s.canvas.width * s.canvas.height)
         .map(|i| {
-            let label = s.canvas.label[i];
-            if label == UNCOVERED {
-                return false;
-            }
-            let patch = s.canvas.patches[label as usize];
-            let Some(mask) = masks.get(patch.source as usize) else {
-                return false;
-            };
-            let sw = s.sources[patch.source as usize].width();
-            s.source_coords(patch, i % w, i / w)
-                .is_some_and(|(sx, sy)| mask[sy * sw + sx])
+            shown_pixel(s, i)
+                .is_some_and(|(source, j)| masks.get(source).is_some_and(|mask| mask[j]))
         })
         .collect()
 }
