@@ -375,8 +375,12 @@ export function createPanel(ui) {
       if (event.phase === 'features') {
         zoomCanvas();
         drawPlacement();
-        const curves = new Uint8ClampedArray(synthesis.width * synthesis.height * 4);
-        synthesis.view('renderFeatures', curves);
+        // The transferred view itself (no copy of an output-sized buffer every step).
+        const curves = synthesis.imageData('renderFeatures')?.data ?? (() => {
+          const copy = new Uint8ClampedArray(synthesis.width * synthesis.height * 4);
+          synthesis.view('renderFeatures', copy);
+          return copy;
+        })();
         drawCurves(ui.$('fg-map'), curves, synthesis.width, synthesis.height, shownSide(ui.$('fg-map')));
         const how = event.colourOnly ? 'colour only (no oriented features to match)'
           : `feature cost ${event.featureCost.toFixed(2)} · colour ${event.colourCost.toExponential(2)}`;
