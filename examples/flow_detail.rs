@@ -2,7 +2,8 @@
 //! [SAMPLE] [SIZE] [FRAMES]` (defaults: the page's `tiles_128 256 60`, a vortex of strength 2).
 //! Prints frame 1's flat fraction, coherence and flow energy, the means over frames 30-60 and
 //! their ratios to frame 1, beside the naive warp's; `WRITE=dir` writes frames 1 and the last as
-//! PNGs. Coherence is given plain and against the exemplar at half-pixel positions too
+//! PNGs, `ERRMAP=dir` the last frame's flow error per pixel (white: the 0.5% largest) and how
+//! concentrated it is. Coherence is given plain and against the exemplar at half-pixel positions too
 //! (`quality::sub_pixel_coherence`: sub-pixel matches place content between pixels). Options from the
 //! environment: `HIST` (histogramMatching, 1), `LAMBDA` (0.2),
 //! `FRAME_ITERATIONS` (3), `FRAME_SIZES` (the default, 32,16,8), `EVERY` (1); `KIND` and
@@ -74,6 +75,13 @@ fn main() {
                     q.flat, q.coherence, event.flow_energy, naive.flat, naive.coherence
                 );
             }
+            if let (Ok(dir), Some(c), true) = (
+                std::env::var("ERRMAP"),
+                session.warped_previous(),
+                index == frames,
+            ) {
+                error_map(&frame, c, &format!("{dir}/{name}-{size}-error{index}.png"));
+            }
             if let (Ok(dir), true) = (std::env::var("WRITE"), index == 1 || index == frames) {
                 let png = encode_png(&frame).expect("png");
                 std::fs::write(format!("{dir}/{name}-{size}-frame{index}.png"), png)
@@ -108,4 +116,51 @@ fn sub_pixel_coherence(exemplar: &texsynth::core::Image, frame: &texsynth::core:
 #[cfg(target_arch = "wasm32")]
 fn sub_pixel_coherence(_: &texsynth::core::Image, _: &texsynth::core::Image) -> f64 {
     f64::NAN
+}
+
+/// Writes the per-pixel flow error (squared difference to the warped previous frame, as a
+/// grey level) and prints how concentrated it is.
+fn error_map(
+    frame: &texsynth::core::Image,
+    c: &texsynth::methods::optimization::constraints::Constraint,
+    path: &str,
+) {
+    let ch = frame.channels();
+    let errs: Vec<f64> = frame
+        .data()
+        .chunks(ch)
+        .zip(c.target.data().chunks(ch))
+        .zip(&c.mask)
+        .map(|((a, b), &m)| {
+            if m > 0.0 {
+                a.iter()
+                    .zip(b)
+                    .take(3)
+                    .map(|(x, y)| f64::from(x - y).powi(2))
+                    .sum::<f64>()
+                    / 3.0
+            } else {
+                0.0
+            }
+        })
+        .collect();
+    let total: f64 = errs.iter().sum();
+    let mut sorted = errs.clone();
+    sorted.sort_by(|a, b| b.partial_cmp(a).unwrap());
+    let n = sorted.len();
+    let share = |f: f64| sorted[..(n as f64 * f) as usize].iter().sum::<f64>() / total;
+    println!(
+        "flow error: mean {:.5}; top 5% of pixels carry {:.2}, top 10% {:.2}, top 25% {:.2}, top 50% {:.2}",
+        total / n as f64,
+        share(0.05),
+        share(0.1),
+        share(0.25),
+        share(0.5)
+    );
+    let max = sorted[n / 200].max(1e-9);
+    let img = texsynth::core::Image::from_fn(frame.width(), frame.height(), 1, |x, y, _| {
+        (errs[y * frame.width() + x] / max).min(1.0) as f32
+    })
+    .expect("image");
+    std::fs::write(path, texsynth::core::encode_png(&img).expect("png")).expect("write");
 }
