@@ -1,6 +1,7 @@
 //! How close can a frame made of whole-pixel content come to the warped previous frame, and
 //! how coherent is it? `cargo run --profile explore --example snap_bound -- [SAMPLE] [SIZE]`
-//! (defaults `tiles_128 256`, a vortex of strength 2; `STRENGTH`, `SEED`). Synthesises frame 1
+//! (defaults `tiles_128 256`, a vortex of strength 2; `STRENGTH`, `SEED`;
+//! `FRAMES=n KAPPA=k` repeats the cut frame after frame instead). Synthesises frame 1
 //! as the animation does and warps it one step along the flow (the flow energy's target). Then
 //! makes the next frame from frame 1's own content moved by whole pixels, with no new content:
 //! (a) every pixel picks one of the roundings of its flow vector by graph cut (data cost: the
@@ -65,6 +66,31 @@ fn main() {
             q.coherence / q1.coherence,
             q.flat
         );
+    }
+    // `FRAMES=n KAPPA=k`: the same cut frame after frame, with no re-synthesis, to see the faults
+    // pile up.
+    if let Ok(frames) = std::env::var("FRAMES") {
+        let frames: usize = frames.parse().expect("a frame count");
+        let kappa = std::env::var("KAPPA").map_or(0.5, |v| v.parse().expect("number"));
+        let mut previous = frame.clone();
+        for t in 0..frames {
+            let field = session.field_at(t).expect("field");
+            let warped = warp(&previous, &field, Edge::Clamp).expect("warp");
+            previous = labelled(&previous, &warped.image, &warped.inside, &field, kappa);
+            if (t + 1) % 5 == 0 || t == 0 {
+                let energy = flow_energy(&previous, &warped.image, &warped.inside);
+                let q = quality(&exemplar, &previous).expect("quality");
+                println!(
+                    "frame {:>3} by cuts alone (kappa {kappa}): flow energy {energy:.5}, coherence {:.5} ({:.2}x frame 1), flat {:.3} ({:.2}x)",
+                    t + 2,
+                    q.coherence,
+                    q.coherence / q1.coherence,
+                    q.flat,
+                    q.flat / q1.flat
+                );
+            }
+        }
+        return;
     }
     for block in [1, 2, 4, 8, 16, 32] {
         let snapped = snap(&frame, &warped.image, &warped.inside, &field, block);
