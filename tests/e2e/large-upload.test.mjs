@@ -265,6 +265,18 @@ test('a photo used whole synthesises, and the quality line says why it is not me
   await page.mouse.move(box.x + box.width * 0.8, y, { steps: 2 });
   await page.mouse.up();
   await page.check('input[name="fg-brush"][value="off"]');
+  // The keyboard brush ranges over the picture, not the letterbox's bars: at the top of its
+  // range the cursor ring sits on the picture's top edge, 17.5 pixels into the box.
+  await page.focus('#fg-exemplar');
+  for (let n = 0; n < 30; n++) await page.keyboard.press('ArrowUp');
+  const ring = await page.evaluate(() => {
+    const r = document.querySelector('.brush-ring');
+    return [parseFloat(r.style.left), parseFloat(r.style.top)];
+  });
+  const boxNow = await page.locator('#fg-exemplar').boundingBox();
+  assert.ok(Math.abs(ring[1] - (boxNow.y + (boxNow.height - 105) / 2)) < 0.5, `ring at ${ring}, box ${JSON.stringify(boxNow)}`);
+  assert.ok(Math.abs(ring[0] - (boxNow.x + boxNow.width / 2)) < 0.5, `ring at ${ring}`);
+  await page.focus('#fg-patch');
   await page.waitForFunction((n) => Number(/(\d+) pixels/.exec(document.getElementById('fg-exemplar-caption').textContent)?.[1]) > n + 2000, before, { timeout: 30_000 });
   const painted = await page.evaluate((row) => {
     const canvas = document.getElementById('fg-exemplar');

@@ -3,6 +3,18 @@
 const cache = new WeakMap();
 
 /**
+ * Where `canvas`'s picture is on screen (client coordinates): its box, or with `object-fit:
+ * contain` the part of the box the picture fills (a 4:3 map in a square box is letterboxed).
+ */
+export function shownRect(canvas) {
+  const outer = canvas.getBoundingClientRect();
+  if (getComputedStyle(canvas).objectFit !== 'contain' || !(canvas.width > 0 && canvas.height > 0)) return outer;
+  const fit = Math.min(outer.width / canvas.width, outer.height / canvas.height);
+  const [width, height] = [canvas.width * fit, canvas.height * fit];
+  return { left: outer.left + (outer.width - width) / 2, top: outer.top + (outer.height - height) / 2, width, height };
+}
+
+/**
  * Draws `source` (anything with width, height and renderInto(Uint8ClampedArray)) on `canvas`. A
  * source that already holds its pixels as an ImageData (a worker session's mirror:
  * `imageData('renderInto')`) is put as it is, with no copy.

@@ -6,8 +6,13 @@
 // the painting: they receive pointer events at the cursor, so a keyboard stroke is the same
 // stroke a pointer would make.
 
+import { shownRect } from './canvas.js';
+
 const HELP = 'arrows move the brush (Shift: faster), hold Space to paint, Enter paints one dab';
-/** canvas -> { fx, fy, down }: the cursor as a share of the canvas, and whether a stroke is on. */
+/**
+ * canvas -> { fx, fy, down }: the cursor as a share of the picture shown (a letterboxed canvas's
+ * bars are not part of it), and whether a stroke is on.
+ */
 const cursors = new WeakMap();
 let ring = null;
 
@@ -88,7 +93,7 @@ function end(canvas, always = false) {
 /** A pointer event at the cursor; it bubbles, so the panels' window `pointerup` sees it too. */
 function send(canvas, type) {
   const { fx, fy } = cursorOf(canvas);
-  const rect = canvas.getBoundingClientRect();
+  const rect = shownRect(canvas);
   const at = { clientX: rect.left + fx * rect.width, clientY: rect.top + fy * rect.height };
   const init = { ...at, bubbles: true, button: 0, buttons: type === 'pointerdown' || type === 'pointermove' ? 1 : 0 };
   canvas.dispatchEvent(type === 'click' ? new MouseEvent(type, init) : new PointerEvent(type, { ...init, isPrimary: true }));
@@ -103,7 +108,7 @@ function showRing(canvas) {
     document.body.append(ring);
   }
   const { fx, fy, down } = cursorOf(canvas);
-  const rect = canvas.getBoundingClientRect();
+  const rect = shownRect(canvas);
   ring.style.left = `${rect.left + fx * rect.width}px`;
   ring.style.top = `${rect.top + fy * rect.height}px`;
   ring.classList.toggle('painting', down);

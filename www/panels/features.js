@@ -5,7 +5,7 @@
 // Both syntheses run in the page's worker (www/lib/worker.js); the exemplar's map is detected and
 // edited on the page, or in the worker for a photo used whole (features-map.js), and guides the
 // synthesis as edited.
-import { drawInto } from '../lib/canvas.js';
+import { drawInto, shownRect } from '../lib/canvas.js';
 import { showQualityOrWhy } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
 import { paintable } from '../lib/keyboard-brush.js';
@@ -156,16 +156,8 @@ export function createPanel(ui) {
     if (mode === 'off' || !map) return;
     // The map as shown: the canvas's box with the picture contained in it (object-fit), so a
     // map of another shape than the square box keeps its proportions.
-    const canvas = ui.$('fg-exemplar');
-    const outer = canvas.getBoundingClientRect();
-    const fit = Math.min(outer.width / canvas.width, outer.height / canvas.height);
-    if (!(fit > 0)) return;
-    const box = {
-      left: outer.left + (outer.width - canvas.width * fit) / 2,
-      top: outer.top + (outer.height - canvas.height * fit) / 2,
-      width: canvas.width * fit,
-      height: canvas.height * fit,
-    };
+    const box = shownRect(ui.$('fg-exemplar'));
+    if (!(box.width > 0 && box.height > 0)) return;
     const x = ((event.clientX - box.left) / box.width) * map.width;
     const y = ((event.clientY - box.top) / box.height) * map.height;
     const from = start || !lastPaint ? [x, y] : lastPaint;
