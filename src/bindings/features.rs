@@ -58,6 +58,16 @@ pub struct FeatureMap {
 }
 
 impl FeatureMap {
+    /// The curves as edited, one flag per exemplar pixel.
+    pub(crate) fn mask(&self) -> &[bool] {
+        &self.map.mask
+    }
+
+    /// The map's width and height (the exemplar's).
+    pub(crate) fn size(&self) -> (usize, usize) {
+        (self.map.width, self.map.height)
+    }
+
     fn detect(exemplar: &Exemplar, options: &JsValue) -> JsResult<FeatureMap> {
         let js = OptionsReader::new(options, &["features", "threshold", "alpha"])?;
         let options = read_detect(&js)?;

@@ -7,6 +7,7 @@ use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
 use super::exemplar::Exemplar;
+use super::features::FeatureMap;
 use super::options::{OptionsReader, object};
 use super::pixels::{render_into, write_rgba};
 use crate::core::Error;
@@ -180,34 +181,31 @@ impl GraphcutTextures {
     /// sources (rotations, mirrors, scales) has no mask for them and is refused.
     #[wasm_bindgen(js_name = carriedBrokenFeatures)]
     pub fn carried_broken_features(&self, feature_mask: &[u8]) -> JsResult<f64> {
-        let s = self.session.synthesis();
-        if s.sources.len() != 1 {
-            return Err(Error::InvalidParameter {
-                name: "featureMask",
+        let mask: Vec<bool> = feature_mask.iter().map(|&b| b != 0).collect();
+        self.carried_broken_of(&mask, "featureMask")
+    }
+
+    /// `carriedBrokenFeatures` with the curves of `map` (the exemplar's `FeatureMap`, as
+    /// edited) instead of its mask: in a worker the map's own object is passed, and a photo's
+    /// map (12 MB of mask at 4000x3000) need not travel to the page and back.
+    #[wasm_bindgen(js_name = carriedBrokenFeaturesOf)]
+    pub fn carried_broken_features_of(&self, map: &FeatureMap) -> JsResult<f64> {
+        let source = &self.session.synthesis().sources[0];
+        let (w, h) = map.size();
+        if (w, h) != (source.width(), source.height()) {
+            return Err(Error::InvalidSize {
+                what: "map",
+                width: w,
+                height: h,
                 reason: format!(
-                    "the carried count needs a session of the exemplar alone; this one has {} sources (deformations)",
-                    s.sources.len()
+                    "must be the exemplar's map, {}x{}",
+                    source.width(),
+                    source.height()
                 ),
             }
             .into());
         }
-        let (sw, sh) = (s.sources[0].width(), s.sources[0].height());
-        if feature_mask.len() != sw * sh {
-            return Err(Error::LengthMismatch {
-                what: "featureMask",
-                expected: sw * sh,
-                actual: feature_mask.len(),
-            }
-            .into());
-        }
-        let mask: Vec<bool> = feature_mask.iter().map(|&b| b != 0).collect();
-        let carried = carried_mask(s, &[&mask]);
-        Ok(carried_broken(
-            &carried,
-            (s.canvas.width, s.canvas.height),
-            &mask,
-            (sw, sh),
-        ))
+        self.carried_broken_of(map.mask(), "map")
     }
 
     #[wasm_bindgen(getter)]
@@ -336,4 +334,38 @@ pub(super) fn graph_object(g: &GraphView) -> JsValue {
         ("oldDown", Float32Array::from(g.old_down.as_slice()).into()),
         ("taken", Uint8Array::from(g.taken.as_slice()).into()),
     ])
+}
+
+impl GraphcutTextures {
+    /// The carried count against `mask` (one flag per exemplar pixel); `what` names the argument
+    /// in errors.
+    fn carried_broken_of(&self, mask: &[bool], what: &'static str) -> JsResult<f64> {
+        let s = self.session.synthesis();
+        if s.sources.len() != 1 {
+            return Err(Error::InvalidParameter {
+                name: what,
+                reason: format!(
+                    "the carried count needs a session of the exemplar alone; this one has {} sources (deformations)",
+                    s.sources.len()
+                ),
+            }
+            .into());
+        }
+        let (sw, sh) = (s.sources[0].width(), s.sources[0].height());
+        if mask.len() != sw * sh {
+            return Err(Error::LengthMismatch {
+                what,
+                expected: sw * sh,
+                actual: mask.len(),
+            }
+            .into());
+        }
+        let carried = carried_mask(s, &[mask]);
+        Ok(carried_broken(
+            &carried,
+            (s.canvas.width, s.canvas.height),
+            mask,
+            (sw, sh),
+        ))
+    }
 }

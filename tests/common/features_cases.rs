@@ -266,6 +266,22 @@ fn carried_counts_score_both_methods_on_the_same_map() {
     assert!(ours.is_finite() && theirs.is_finite(), "{ours} {theirs}");
     // Ends per 1000 curve pixels: a tiles output has curves, and cannot end more than every one.
     assert!(ours.abs() < 1000.0 && theirs.abs() < 1000.0);
+    // The map itself counts as its mask does, edits included (a worker passes the map).
+    assert_eq!(gc.carried_broken_features_of(&map).unwrap(), theirs);
+    let mut edited = detect_features(&ex, JsValue::UNDEFINED).unwrap();
+    edited
+        .paint_line(0.0, 40.0, 63.0, 40.0, 3.0, false)
+        .unwrap();
+    assert_eq!(
+        gc.carried_broken_features_of(&edited).unwrap(),
+        gc.carried_broken_features(&edited.to_mask().to_vec())
+            .unwrap()
+    );
+    assert_ne!(
+        edited.to_mask().to_vec(),
+        mask,
+        "the erased band is in the mask"
+    );
     // No curves carried: nothing to count.
     assert_eq!(
         gc.carried_broken_features(&vec![0u8; 64 * 64]).unwrap(),
@@ -283,4 +299,5 @@ fn carried_counts_score_both_methods_on_the_same_map() {
     .unwrap();
     deformed.step().unwrap();
     assert!(error_message(deformed.carried_broken_features(&mask)).contains("sources"));
+    assert!(error_message(deformed.carried_broken_features_of(&map)).contains("map"));
 }

@@ -1,6 +1,7 @@
 // A feature map detected and edited in a worker, handed to FeatureSynthesis.withFeatureMap there
 // by reference ({ ref }): the same map, the same synthesis and the same broken-feature count as
-// the same calls made on the main thread.
+// the same calls made on the main thread; and a graph-cut session there counts at seams against
+// it by reference.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { api, sampleBytes } from './fixtures.mjs';
@@ -53,6 +54,17 @@ test('a worker FeatureMap is edited, feeds withFeatureMap by reference and count
     assert.equal(broken, local.brokenFeatures(data, 96, 96));
     assert.ok(Number.isFinite(broken));
 
+    // A graph-cut session of the worker counts the curves its seams cut against the worker's map
+    // by reference (a photo's map stays there), as against the map's mask sent along.
+    const gc = await worker.createSession('GraphcutTextures', exemplar, { outputWidth: 96, outputHeight: 96, seed: 3 });
+    await gc.run({ render: null });
+    const seams = await gc.call('carriedBrokenFeaturesOf', remote);
+    assert.ok(Number.isFinite(seams));
+    assert.equal(seams, await gc.call('carriedBrokenFeatures', mask));
+    const foreign = await other.createSession('FeatureMap', exemplar, DETECT);
+    await assert.rejects(gc.call('carriedBrokenFeaturesOf', foreign), /lives in another worker/);
+    await assert.rejects(gc.call('carriedBrokenFeaturesOf', synthesis), /FeatureMap/);
+
     // Wrong references are errors that name the problem.
     await assert.rejects(worker.createSession('FeatureSynthesis.noSuchThing', exemplar, remote, OPTIONS), /FeatureSynthesis has no static constructor 'noSuchThing'/);
     await assert.rejects(worker.createSession('FeatureSynthesis.withFeatureMap.x', exemplar, remote), /unknown session kind/);
@@ -60,7 +72,9 @@ test('a worker FeatureMap is edited, feeds withFeatureMap by reference and count
     await remote.free();
     await assert.rejects(worker.createSession('FeatureSynthesis.withFeatureMap', exemplar, remote, OPTIONS), /no object \d+ in this worker/);
     await assert.rejects(worker.createSession('FeatureSynthesis.withFeatureMap', exemplar, synthesis, OPTIONS), /FeatureMap/);
+    await assert.rejects(gc.call('carriedBrokenFeaturesOf', remote), /no object \d+ in this worker/);
     await synthesis.free();
+    await gc.free();
   } finally {
     local.free();
     exemplar.free();

@@ -280,6 +280,11 @@ export class GraphcutTextures implements Steppable<GraphcutTexturesEvent> {
    * seams cut. Refused for a session with deformed sources.
    */
   carriedBrokenFeatures(featureMask: Bytes): number;
+  /**
+   * `carriedBrokenFeatures` with the curves of `map` (the exemplar's map as edited) instead of
+   * its mask: in a worker, pass the worker's own FeatureMap and a photo's map stays there.
+   */
+  carriedBrokenFeaturesOf(map: FeatureMap): number;
   free(): void;
   [Symbol.dispose](): void;
   [Symbol.iterator](): Iterator<GraphcutTexturesEvent>;

@@ -121,9 +121,11 @@ export class WorkerSession {
   }
 
   /** Calls a session method or reads a getter in the worker: call('schedule'), call('field'), call('addSource', { exemplar }, x, y). */
-  call(method, ...args) {
+  async call(method, ...args) {
     const transfer = [];
-    const wire = args.map((a) => (a && typeof a === 'object' && 'exemplar' in a ? { exemplar: exemplarWire(a.exemplar, transfer) } : a));
+    // A session of the same worker (a FeatureMap made there, say) goes as that object itself.
+    const wire = args.map((a) => this.worker.refWire(a)
+      ?? (a && typeof a === 'object' && 'exemplar' in a ? { exemplar: exemplarWire(a.exemplar, transfer) } : a));
     return this.worker.request({ type: 'call', session: this.id, method, args: wire }, { transfer });
   }
 

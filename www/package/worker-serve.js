@@ -7,7 +7,8 @@
 //   step   { render }           one step -> { event, image? }
 //   run    { render, every }    steps until done or paused; streams { type: 'event', event, image? }
 //   pause                       stops a run after the current step
-//   call   { method, args }     any session method or getter (teaching views: schedule, field, ...)
+//   call   { method, args }     any session method or getter (teaching views: schedule, field, ...);
+//                               args as create's: exemplars, and objects made here as { ref: id }
 //   render { method, width?, height? } -> { image, width, height } (renderInto, renderOffsetMap, renderSeams, ...)
 //   snapshot { views, calls, getters }   rendered views, method results and getters in one reply
 //     (step takes the same keys, plus finalViews / finalCalls wanted when that step finishes)
@@ -70,7 +71,12 @@ export function serve(lib, { post, listen }) {
     return value;
   };
   // Exemplar arguments of methods (addSource, addLayer) are marked { exemplar: ... }.
-  const convertArgs = (args) => args.map((a) => (a && typeof a === 'object' && 'exemplar' in a ? toExemplar(a.exemplar) : a));
+  const toObject = ({ ref }) => {
+    if (!sessions.has(ref)) throw new Error(`no object ${ref} in this worker (freed, or made by another)`);
+    return sessions.get(ref);
+  };
+  const convertArgs = (args) => args.map((a) => (isRefWire(a) ? toObject(a)
+    : a && typeof a === 'object' && 'exemplar' in a ? toExemplar(a.exemplar) : a));
   // Exemplars (also inside plain objects and arrays, e.g. TileableSession.result()) travel as
   // { width, height, png }: PNG keeps the channels; Exemplar.fromBytes(png) on the other side.
   const cloneable = (value) => {
@@ -141,10 +147,6 @@ export function serve(lib, { post, listen }) {
         if (factory !== undefined && (!/^[a-z]\w*$/.test(factory) || typeof Cls[factory] !== 'function')) {
           throw new Error(`${name} has no static constructor '${factory}'`);
         }
-        const toObject = ({ ref }) => {
-          if (!sessions.has(ref)) throw new Error(`no object ${ref} in this worker (freed, or made by another)`);
-          return sessions.get(ref);
-        };
         const args = message.args.map((a) => (isExemplarWire(a) ? toExemplar(a) : isClipWire(a) ? toClip(a) : isRefWire(a) ? toObject(a) : a));
         const session = factory === undefined ? new Cls(...args) : Cls[factory](...args);
         // A clip has been copied into the session.

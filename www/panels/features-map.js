@@ -68,7 +68,8 @@ export function drawCurves(canvas, rgba, width, height, side) {
 /**
  * Detects the map of `exemplar` with `options` ({ features, threshold }), on the page or in the
  * worker by its size, to be shown `viewSide` device pixels long. Resolves to { width, height,
- * count, here, draw(canvas), stroke(...), synthesis(options, spec), mask(), broken(session),
+ * count, here, draw(canvas), stroke(...), synthesis(options, spec), seams(session),
+ * broken(session),
  * free() }.
  */
 export async function detectExemplarMap(exemplar, options, viewSide) {
@@ -140,9 +141,13 @@ export async function detectExemplarMap(exemplar, options, viewSide) {
       return remoteSession('FeatureSynthesis.withFeatureMap', [exemplar, remote, synthesisOptions], spec);
     },
 
-    /** The map's curves as edited, one byte per exemplar pixel (FeatureMap.toMask()). */
-    mask() {
-      return here ? Promise.resolve(local.toMask()) : remote.send('toMask');
+    /**
+     * The count at seams of a graph-cut session of the worker against this map as edited: a
+     * photo's map stays in the worker (passed by reference), a small one goes as its mask.
+     */
+    async seams(session) {
+      if (here) return session.send('carriedBrokenFeatures', local.toMask());
+      return session.send('carriedBrokenFeaturesOf', remote);
     },
 
     /** The broken-feature count of a session's output against the exemplar as detected. */

@@ -253,8 +253,7 @@ export function createPanel(ui) {
   async function broken(session, kind) {
     if (!map) return { detected: null, seams: null };
     const detected = map.broken(session);
-    const seams = kind === 'features' ? session.send('carriedBrokenFeatures')
-      : map.mask().then((mask) => session.send('carriedBrokenFeatures', mask));
+    const seams = kind === 'features' ? session.send('carriedBrokenFeatures') : map.seams(session);
     return { detected: await detected, seams: await seams };
   }
 
