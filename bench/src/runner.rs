@@ -155,15 +155,17 @@ pub fn run_exemplar(
     out
 }
 
+/// An output's quality and broken-feature count, or why it could not be scored.
+type Score = Result<(Quality, f64), String>;
+
 /// The quality of every output, on all cores: the exact nearest-patch search is the slow part
 /// of the whole benchmark, and it is not timed.
-fn score_all(exemplar: &Image, timed: &[Timed]) -> Vec<Result<(Quality, f64), String>> {
+fn score_all(exemplar: &Image, timed: &[Timed]) -> Vec<Score> {
     let threads = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
         .min(timed.len().max(1));
     let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<Option<Result<(Quality, f64), String>>>> =
-        Mutex::new(vec![None; timed.len()]);
+    let results: Mutex<Vec<Option<Score>>> = Mutex::new(vec![None; timed.len()]);
     std::thread::scope(|s| {
         for _ in 0..threads {
             s.spawn(|| {

@@ -10,6 +10,8 @@ use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     let mut u = arbitrary::Unstructured::new(data);
-    let Ok(exemplar) = common::exemplar(&mut u) else { return };
+    let Ok(exemplar) = common::exemplar(&mut u) else {
+        return;
+    };
     let _ = common::drive(&mut u, &exemplar, common::Values::Small, 3);
 });

@@ -13,7 +13,9 @@ use texsynth::methods::design::{
 use texsynth::methods::features::{
     DetectOptions, FeatureKind, FeatureOptions, FeaturePlacement, FeatureSynthesis,
 };
-use texsynth::methods::flow::{Component, FlowKind, FlowOptions, FlowSession, FlowSource, FlowSpec};
+use texsynth::methods::flow::{
+    Component, FlowKind, FlowOptions, FlowSession, FlowSource, FlowSpec,
+};
 use texsynth::methods::video::{self, Volume};
 use texsynth::methods::{graphcut, optimization};
 use texsynth::solvers::nn::Search;
@@ -31,8 +33,10 @@ const BUDGET_MIB: usize = 64;
 
 /// A 16x16 RGB exemplar with some structure (for the options target, which fuzzes only options).
 pub fn fixed_exemplar() -> Image {
-    Image::from_fn(16, 16, 3, |x, y, c| ((x * 7 + y * 13 + c * 5) % 17) as f32 / 16.0)
-        .expect("16x16")
+    Image::from_fn(16, 16, 3, |x, y, c| {
+        ((x * 7 + y * 13 + c * 5) % 17) as f32 / 16.0
+    })
+    .expect("16x16")
 }
 
 /// An exemplar of 1 to 24 pixels a side, 1, 3 or 4 channels, values in 0..=1.
@@ -43,7 +47,11 @@ pub fn exemplar(u: &mut Unstructured) -> Result<Image> {
     let flat = u.ratio(1, 8)?;
     let mut data = Vec::with_capacity(w * h * c);
     for i in 0..w * h * c {
-        let v = if flat && i >= c { data[i % c] } else { f32::from(u.arbitrary::<u8>()?) / 255.0 };
+        let v = if flat && i >= c {
+            data[i % c]
+        } else {
+            f32::from(u.arbitrary::<u8>()?) / 255.0
+        };
         data.push(v);
     }
     Ok(Image::from_vec(w, h, c, data).expect("sizes in range"))
@@ -130,18 +138,27 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                 output_width: size(u, v)?,
                 output_height: size(u, v)?,
                 seed: seed(u)?,
-                placement: graphcut::Placement::from_name(*u.choose(&["random", "entire-patch", "sub-patch"])?)
-                    .expect("known"),
+                placement: graphcut::Placement::from_name(*u.choose(&[
+                    "random",
+                    "entire-patch",
+                    "sub-patch",
+                ])?)
+                .expect("known"),
                 k: real(u, 0.01, v)?,
                 error_region: count(u, 16, v)?,
                 refinement_patches: count(u, 4, v)?,
                 gradient_cost: u.arbitrary()?,
-                blend: graphcut::Blend::from_name(*u.choose(&["none", "feather", "spline"])?).expect("known"),
+                blend: graphcut::Blend::from_name(*u.choose(&["none", "feather", "spline"])?)
+                    .expect("known"),
                 transforms: graphcut::Transforms {
                     rotate: u.arbitrary()?,
                     mirror: u.arbitrary()?,
                     scales: [
-                        if u.arbitrary()? { Some(real(u, 0.5, v)?) } else { None },
+                        if u.arbitrary()? {
+                            Some(real(u, 0.5, v)?)
+                        } else {
+                            None
+                        },
                         None,
                         None,
                         None,
@@ -165,7 +182,9 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
             let mut component = Component::new(kind, real(u, 2.0, v)?);
             component.period = real(u, 10.0, v)?;
             component.angle = real(u, 90.0, v)?;
-            let Ok(spec) = FlowSpec::new(vec![component]) else { return Ok(()) };
+            let Ok(spec) = FlowSpec::new(vec![component]) else {
+                return Ok(());
+            };
             let o = FlowOptions {
                 output_width: size(u, v)?,
                 output_height: size(u, v)?,
@@ -203,18 +222,26 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                     }
                 }
             }
-            let Ok(clip) = Volume::from_rgba_frames(w, h, frames, &rgba) else { return Ok(()) };
+            let Ok(clip) = Volume::from_rgba_frames(w, h, frames, &rgba) else {
+                return Ok(());
+            };
             let pick = |u: &mut Unstructured, v| -> Result<Option<usize>> {
-                Ok(if u.arbitrary()? { Some(size(u, v)?) } else { None })
+                Ok(if u.arbitrary()? {
+                    Some(size(u, v)?)
+                } else {
+                    None
+                })
             };
             let o = video::Options {
-                mode: video::Mode::from_name(*u.choose(&["loop", "offsets", "extend"])?).expect("known"),
+                mode: video::Mode::from_name(*u.choose(&["loop", "offsets", "extend"])?)
+                    .expect("known"),
                 output_width: pick(u, v)?,
                 output_height: pick(u, v)?,
                 output_frames: pick(u, v)?,
                 fixed_frames: count(u, 4, v)?,
                 transition_window: count(u, 8, v)?.max(3),
-                placement: video::Placement::from_name(*u.choose(&["random", "matching"])?).expect("known"),
+                placement: video::Placement::from_name(*u.choose(&["random", "matching"])?)
+                    .expect("known"),
                 seed: seed(u)?,
                 k: real(u, 0.01, v)?.max(1e-6),
                 refinement_patches: count(u, 2, v)?.min(1024),
@@ -231,8 +258,16 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
         }
         4 => {
             let o = TileableOptions {
-                overlap_x: if u.arbitrary()? { Some(count(u, 12, v)?) } else { None },
-                overlap_y: if u.arbitrary()? { Some(count(u, 12, v)?) } else { None },
+                overlap_x: if u.arbitrary()? {
+                    Some(count(u, 12, v)?)
+                } else {
+                    None
+                },
+                overlap_y: if u.arbitrary()? {
+                    Some(count(u, 12, v)?)
+                } else {
+                    None
+                },
                 memory_budget_mib: Some(BUDGET_MIB),
             };
             if let Ok(mut s) = TileableSession::new(ex, o) {
@@ -255,10 +290,17 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                 memory_budget_mib: BUDGET_MIB,
             };
             if let Ok(mut brush) = LocalDeformation::new(ex, o) {
-                let mask: Vec<bool> = (0..ex.pixel_count()).map(|_| u.arbitrary().unwrap_or(false)).collect();
+                let mask: Vec<bool> = (0..ex.pixel_count())
+                    .map(|_| u.arbitrary().unwrap_or(false))
+                    .collect();
                 let dx = u.int_in_range(-30isize..=30)?;
                 let dy = u.int_in_range(-30isize..=30)?;
-                let _ = brush.stroke(&Stroke { reference: ex, mask: &mask, dx, dy });
+                let _ = brush.stroke(&Stroke {
+                    reference: ex,
+                    mask: &mask,
+                    dx,
+                    dy,
+                });
                 brush.undo();
             }
         }
@@ -267,10 +309,22 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                 output_width: size(u, v)?,
                 output_height: size(u, v)?,
                 patch_size: count(u, 16, v)?.clamp(8, 256),
-                overlap: if u.arbitrary()? { Some(count(u, 8, v)?.clamp(1, 127)) } else { None },
-                search: if u.arbitrary()? { LayerSearch::Qtp } else { LayerSearch::Exhaustive },
+                overlap: if u.arbitrary()? {
+                    Some(count(u, 8, v)?.clamp(1, 127))
+                } else {
+                    None
+                },
+                search: if u.arbitrary()? {
+                    LayerSearch::Qtp
+                } else {
+                    LayerSearch::Exhaustive
+                },
                 keep: count(u, 8, v)?.clamp(1, 256),
-                placement: *u.choose(&[LayerPlacement::Logistic, LayerPlacement::Random, LayerPlacement::Best])?,
+                placement: *u.choose(&[
+                    LayerPlacement::Logistic,
+                    LayerPlacement::Random,
+                    LayerPlacement::Best,
+                ])?,
                 tolerance: real(u, 0.3, v)?,
                 seed: seed(u)?,
                 memory_budget_mib: BUDGET_MIB,
@@ -280,7 +334,10 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                 return Ok(());
             }
             let layout = vec![0u8; n];
-            let layer = Layer { texture: ex.clone(), deformations: vec![] };
+            let layer = Layer {
+                texture: ex.clone(),
+                deformations: vec![],
+            };
             if let Ok(mut s) = LayerDesign::new(&[layer], &layout, o) {
                 for _ in 0..steps {
                     if s.is_done() || s.step().is_err() {
@@ -293,17 +350,30 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
             let o = FeatureOptions {
                 output_width: size(u, v)?.min(8192),
                 output_height: size(u, v)?.min(8192),
-                placement: FeaturePlacement::from_name(*u.choose(&["graphcut", "scan"])?).expect("known"),
+                placement: FeaturePlacement::from_name(*u.choose(&["graphcut", "scan"])?)
+                    .expect("known"),
                 seam_feature_weight: real(u, 1.0, v)?,
                 patch_size: count(u, 24, v)?.clamp(1, 4096),
-                overlap: if u.arbitrary()? { Some(count(u, 8, v)?.clamp(1, 4096)) } else { None },
+                overlap: if u.arbitrary()? {
+                    Some(count(u, 8, v)?.clamp(1, 4096))
+                } else {
+                    None
+                },
                 feature_weight: real(u, 0.5, v)?,
                 warp: u.arbitrary()?,
                 tolerance: real(u, 0.1, v)?,
-                feature_candidates: if u.arbitrary()? { Some(count(u, 64, v)?.clamp(1, 100_000)) } else { None },
+                feature_candidates: if u.arbitrary()? {
+                    Some(count(u, 64, v)?.clamp(1, 100_000))
+                } else {
+                    None
+                },
                 extra_inputs: vec![],
                 detect: DetectOptions {
-                    kind: *u.choose(&[FeatureKind::Edges, FeatureKind::Ridges, FeatureKind::Both])?,
+                    kind: *u.choose(&[
+                        FeatureKind::Edges,
+                        FeatureKind::Ridges,
+                        FeatureKind::Both,
+                    ])?,
                     percentile: real(u, 0.9, v)?,
                     alpha: real(u, 0.3, v)?,
                 },
