@@ -253,7 +253,8 @@ export function createPanel(ui) {
       const drift = ui.$('fl-quality-drift');
       const ratio = (name) => Number(b[name]) / Number(a[name]);
       drift.textContent = `frame ${b.frame} against frame 1: flat ×${ratio('flat').toFixed(2)} · ` +
-        `coherence ×${ratio('coherence').toFixed(2)} (above 1: detail lost along the way)`;
+        `coherence ×${ratio('coherence').toFixed(2)} (above 1: further from the exemplar than frame 1: detail lost, ` +
+        'or, under a turning flow, features turned and moved off whole pixels, which no exemplar patch is)';
       drift.dataset.flat = String(ratio('flat'));
       drift.dataset.coherence = String(ratio('coherence'));
     }, (error) => {
