@@ -126,6 +126,7 @@ function selectPanel(module) {
       setStatus(event.done ? 'done' : state.runner.running ? 'running…' : 'paused');
     },
     onDone: () => setStatus('done'),
+    onIdle: (why) => setStatus(why),
     onError: (message) => {
       showError(message);
       setStatus('stopped');

@@ -23,6 +23,11 @@ test('stage 1 fills the gallery with deformed textures', async () => {
   await page.click('button[data-sample="potatoes_64"]');
   await page.waitForSelector('body[data-exemplar="potatoes 64×64"]');
   await page.waitForSelector('body[data-gallery-count="1"]');
+  // Run has nothing to do in this stage (its button makes the set): the status says so, rather
+  // than "running…" with no step.
+  await page.click('#run');
+  await page.waitForFunction(() => document.getElementById('status').textContent.startsWith('nothing to run in Deform'), null, { timeout: 5_000 });
+  assert.match(await page.textContent('#status'), /^nothing to run in Deform: choose ranges, then "Make deformed set"/);
   await page.click('#dd-make');
   await page.waitForSelector('body[data-deformed]');
   const count = Number(await page.getAttribute('body', 'data-gallery-count'));

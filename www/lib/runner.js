@@ -1,10 +1,11 @@
 // Drives a session from the page: Run steps once per animation frame (so each step is drawn),
 // Pause stops, Step runs exactly one. The caller owns the session; this only paces it. `step` may
 // return the event or a promise of it (a session in the worker, www/lib/worker.js): one step is
-// in flight at a time, and the main thread stays free while the worker computes.
+// in flight at a time, and the main thread stays free while the worker computes. A step that
+// resolves to { idle: why } runs nothing: the runner stops and hands `why` to onIdle.
 export class Runner {
-  constructor({ step, onStep, onDone, onError }) {
-    Object.assign(this, { stepFn: step, onStep, onDone, onError });
+  constructor({ step, onStep, onDone, onError, onIdle }) {
+    Object.assign(this, { stepFn: step, onStep, onDone, onError, onIdle });
     this.running = false;
     this.busy = null;
     this.loop = null;
@@ -46,6 +47,13 @@ export class Runner {
     try {
       const event = await this.stepFn();
       if (!event) return false;
+      // A panel with nothing to run where it stands (a design stage driven by its own buttons)
+      // says so instead of leaving "running…" up.
+      if (event.idle) {
+        this.running = false;
+        this.onIdle?.(event.idle);
+        return false;
+      }
       this.onStep(event);
       if (event.done) {
         this.running = false;

@@ -18,12 +18,14 @@ const STAGES = [deformStage, brushStage, synthesisStage, layersStage, tileableSt
 export function createPanel(ui) {
   let gallery = null;
   let stage = null;
+  let stageTitle = '';
   let syncStages = () => {};
   const context = { ui, get gallery() { return gallery; }, readout: (text) => { ui.$('ds-readout').textContent = text; } };
 
   function selectStage(module) {
     stage?.unmount?.();
     stage = module.createStage(context);
+    stageTitle = module.title;
     ui.$('ds-stage-options').innerHTML = stage.optionsHtml;
     ui.$('ds-stage-side').innerHTML = stage.sideHtml ?? '';
     explain(ui.$('ds-explain'), `ds-${module.id}`);
@@ -61,7 +63,10 @@ export function createPanel(ui) {
       gallery?.clear();
     },
     step() {
-      return stage?.step ? stage.step() : null;
+      if (!stage) return null;
+      // Deform and Brush act on their own buttons and clicks: Run says so rather than spinning.
+      if (!stage.step) return { idle: `nothing to run in ${stageTitle}: ${stage.hint}` };
+      return stage.step();
     },
     onStep(event) {
       stage?.onStep?.(event);
