@@ -69,8 +69,7 @@ export function drawCurves(canvas, rgba, width, height, side) {
  * Detects the map of `exemplar` with `options` ({ features, threshold }), on the page or in the
  * worker by its size, to be shown `viewSide` device pixels long. Resolves to { width, height,
  * count, here, draw(canvas), stroke(...), synthesis(options, spec), seams(session),
- * broken(session),
- * free() }.
+ * broken(session), free() }.
  */
 export async function detectExemplarMap(exemplar, options, viewSide) {
   const { width, height } = exemplar;
