@@ -20,6 +20,7 @@ use texsynth::methods::flow::warp::warp;
 use texsynth::methods::flow::{
     Component, FlowKind, FlowOptions, FlowSession, FlowSource, FlowSpec,
 };
+use texsynth::methods::optimization::constraints::Constraint;
 use texsynth::methods::quality::quality;
 
 fn main() {
@@ -171,20 +172,15 @@ fn snap(
     out
 }
 
-/// Mean squared difference per value over the pixels whose warp source lies inside (as the
-/// animation's flow energy).
+/// The animation's flow energy of `frame` against `target` (the warp) over the pixels whose warp
+/// source lies inside.
 fn flow_energy(frame: &Image, target: &Image, inside: &[f32]) -> f64 {
-    let c = frame.channels();
-    let (mut sum, mut n) = (0.0f64, 0.0f64);
-    for (i, &m) in inside.iter().enumerate() {
-        if m > 0.0 {
-            for k in 0..c {
-                sum += f64::from(frame.data()[i * c + k] - target.data()[i * c + k]).powi(2);
-            }
-            n += c as f64;
-        }
+    Constraint {
+        target: target.clone(),
+        mask: inside.to_vec(),
+        lambda: 1.0,
     }
-    sum / n
+    .energy(frame)
 }
 
 /// The whole-pixel shift of every pixel by alpha-expansion (two sweeps): data cost the squared
