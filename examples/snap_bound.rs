@@ -57,16 +57,21 @@ fn main() {
         qw.coherence / q1.coherence,
         qw.flat
     );
-    for kappa in [0.0f64, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0] {
-        let snapped = labelled(&frame, &warped.image, &warped.inside, &field, kappa);
-        let energy = flow_energy(&snapped, &warped.image, &warped.inside);
-        let q = quality(&exemplar, &snapped).expect("quality");
+    // A made frame's flow energy against the warp, and its quality against frame 1's.
+    let report = |label: &str, made: &Image, warped: &texsynth::methods::flow::warp::Warped| {
+        let energy = flow_energy(made, &warped.image, &warped.inside);
+        let q = quality(&exemplar, made).expect("quality");
         println!(
-            "cut kappa {kappa}: flow energy {energy:.5}, coherence {:.5} ({:.2}x frame 1), flat {:.3}",
+            "{label}: flow energy {energy:.5}, coherence {:.5} ({:.2}x frame 1), flat {:.3} ({:.2}x)",
             q.coherence,
             q.coherence / q1.coherence,
-            q.flat
+            q.flat,
+            q.flat / q1.flat
         );
+    };
+    for kappa in [0.0f64, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0] {
+        let snapped = labelled(&frame, &warped.image, &warped.inside, &field, kappa);
+        report(&format!("cut kappa {kappa}"), &snapped, &warped);
     }
     // `FRAMES=n KAPPA=k`: the same cut frame after frame, with no re-synthesis, to see the faults
     // pile up.
@@ -79,30 +84,15 @@ fn main() {
             let warped = warp(&previous, &field, Edge::Clamp).expect("warp");
             previous = labelled(&previous, &warped.image, &warped.inside, &field, kappa);
             if (t + 1) % 5 == 0 || t == 0 {
-                let energy = flow_energy(&previous, &warped.image, &warped.inside);
-                let q = quality(&exemplar, &previous).expect("quality");
-                println!(
-                    "frame {:>3} by cuts alone (kappa {kappa}): flow energy {energy:.5}, coherence {:.5} ({:.2}x frame 1), flat {:.3} ({:.2}x)",
-                    t + 2,
-                    q.coherence,
-                    q.coherence / q1.coherence,
-                    q.flat,
-                    q.flat / q1.flat
-                );
+                let label = format!("frame {:>3} by cuts alone (kappa {kappa})", t + 2);
+                report(&label, &previous, &warped);
             }
         }
         return;
     }
     for block in [1, 2, 4, 8, 16, 32] {
         let snapped = snap(&frame, &warped.image, &warped.inside, &field, block);
-        let energy = flow_energy(&snapped, &warped.image, &warped.inside);
-        let q = quality(&exemplar, &snapped).expect("quality");
-        println!(
-            "block {block:>2}: flow energy {energy:.5}, coherence {:.5} ({:.2}x frame 1), flat {:.3}",
-            q.coherence,
-            q.coherence / q1.coherence,
-            q.flat
-        );
+        report(&format!("block {block:>2}"), &snapped, &warped);
     }
 }
 
