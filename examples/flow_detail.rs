@@ -10,11 +10,17 @@
 //! `STRENGTH` pick another single flow (vortex, 2); `SUB_PIXEL=1` sub-pixel matches; `SEED`
 //! the seed (1): the ratios move by about a tenth from seed to seed, so compare changes
 //! over several.
+//!
+//! `BOUND=1` also prints, for every measured frame, the least flow energy that any frame as
+//! coherent as 1.3x frame 1 could have against that frame's warp target, whatever its content
+//! (see [`FlowBound`]), and checks that the frame made obeys the same bound at its own coherence.
 
+use texsynth::core::Image;
 use texsynth::core::{decode, encode_png};
 use texsynth::methods::flow::{
     Component, FlowEventKind, FlowKind, FlowOptions, FlowSession, FlowSource, FlowSpec,
 };
+use texsynth::methods::optimization::constraints::Constraint;
 use texsynth::methods::quality::quality;
 
 fn main() {
@@ -53,6 +59,8 @@ fn main() {
     let mut session = FlowSession::new(&exemplar, flow, options).expect("session");
     let start = std::time::Instant::now();
     let mut rows = Vec::new();
+    let bound = std::env::var("BOUND").is_ok_and(|v| v == "1");
+    let (mut first_coherence, mut bounds) = (f64::NAN, Vec::new());
     loop {
         let event = session.step().expect("step");
         if matches!(event.kind, FlowEventKind::Frame | FlowEventKind::Done) {
@@ -74,6 +82,25 @@ fn main() {
                     "frame {index:>3}: flat {:.3} coherence {:.5} (sub-pixel {sub:.5}) flow energy {:.5} (naive warp: flat {:.3} coherence {:.5})",
                     q.flat, q.coherence, event.flow_energy, naive.flat, naive.coherence
                 );
+                if let (true, Some(c)) = (bound, session.warped_previous()) {
+                    let b = FlowBound::new(&exemplar, c);
+                    let goal = 1.3 * first_coherence;
+                    let (made, least_made) = (b.energy(&frame), b.least_energy(q.coherence));
+                    assert!(
+                        made >= least_made * (1.0 - 1e-9),
+                        "the bound fails its own frame"
+                    );
+                    bounds.push((index, b.least_energy(goal)));
+                    println!(
+                        "           bound: warp target coherence {:.5} ({:.2}x frame 1); least RGB flow energy at coherence 1.3x frame 1: {:.5}; at this frame's coherence {least_made:.5} (made {made:.5})",
+                        b.target_coherence,
+                        b.target_coherence / first_coherence,
+                        b.least_energy(goal),
+                    );
+                }
+                if index == 1 {
+                    first_coherence = q.coherence;
+                }
             }
             if let (Ok(dir), Some(c), true) = (
                 std::env::var("ERRMAP"),
@@ -105,6 +132,95 @@ fn main() {
         sub / first.4,
         start.elapsed().as_secs_f64()
     );
+    let later: Vec<f64> = bounds.iter().filter(|b| b.0 >= 30).map(|b| b.1).collect();
+    if !later.is_empty() {
+        println!(
+            "bound: frames 30-{frames}, mean least RGB flow energy of a frame 1.3x as coherent as frame 1: {:.5} (frames made: {flow:.5})",
+            later.iter().sum::<f64>() / later.len() as f64
+        );
+    }
+}
+
+/// How close to the warp target W can any frame X lie whose coherence is c, whatever its
+/// content? Patch by patch (the coherence's own patches p, 7x7 at stride 2, those wholly inside
+/// the mask: the set Q), the triangle inequality gives sqrt(d_W(p)) <= sqrt(a(p)) + sqrt(d_X(p)),
+/// with d the per-value squared distance to the nearest exemplar patch and a(p) the per-value
+/// squared distance between X and W over p. Minkowski's inequality carries that to the means over
+/// Q. The mean of d_X over Q is at most c P / |Q| (P all the coherence's patches), and the mean of
+/// a over Q is at most 16 M e / (49 |Q|): a pixel lies in at most 16 of the patches, and e is the
+/// per-value mean over the M masked pixels. So
+///
+///   e >= 49 |Q| / (16 M) * max(0, sqrt(mean_Q d_W) - sqrt(c P / |Q|))^2.
+///
+/// It is a lower bound, not an estimate: nothing about how a frame is made enters, and the
+/// frame made must obey it at its own coherence (checked).
+struct FlowBound {
+    /// Coherence of W itself (mean of d_W over all the coherence's patches).
+    target_coherence: f64,
+    /// Mean of d_W over Q.
+    inside_target: f64,
+    patches: f64,
+    inside_patches: f64,
+    masked: f64,
+    target: Image,
+    mask: Vec<f32>,
+}
+
+impl FlowBound {
+    fn new(exemplar: &Image, c: &Constraint) -> Self {
+        let w = c.target.width();
+        assert!(
+            c.mask.iter().all(|&m| m == 0.0 || m == 1.0),
+            "a mask of 0 and 1"
+        );
+        let by_patch =
+            texsynth::methods::quality::coherence_by_patch(exemplar, &c.target).expect("quality");
+        let patch = texsynth::methods::quality::PATCH;
+        let inside: Vec<f64> = by_patch
+            .iter()
+            .filter(|&&(x, y, _)| {
+                (y..y + patch).all(|yy| (x..x + patch).all(|xx| c.mask[yy * w + xx] == 1.0))
+            })
+            .map(|p| p.2)
+            .collect();
+        FlowBound {
+            target_coherence: by_patch.iter().map(|p| p.2).sum::<f64>() / by_patch.len() as f64,
+            inside_target: inside.iter().sum::<f64>() / inside.len() as f64,
+            patches: by_patch.len() as f64,
+            inside_patches: inside.len() as f64,
+            masked: c.mask.iter().filter(|&&m| m == 1.0).count() as f64,
+            target: c.target.with_channels(3).expect("rgb"),
+            mask: c.mask.clone(),
+        }
+    }
+
+    /// The least per-value RGB flow energy of a frame with this coherence.
+    fn least_energy(&self, coherence: f64) -> f64 {
+        let gap = (self.inside_target.sqrt()
+            - (coherence * self.patches / self.inside_patches).sqrt())
+        .max(0.0);
+        49.0 * self.inside_patches / (16.0 * self.masked) * gap * gap
+    }
+
+    /// A frame's per-value RGB flow energy over the masked pixels (the animation's, when the
+    /// frames are RGB).
+    fn energy(&self, frame: &Image) -> f64 {
+        let frame = frame.with_channels(3).expect("rgb");
+        let sum: f64 = frame
+            .data()
+            .chunks(3)
+            .zip(self.target.data().chunks(3))
+            .zip(&self.mask)
+            .filter(|(_, m)| **m == 1.0)
+            .map(|((a, b), _)| {
+                a.iter()
+                    .zip(b)
+                    .map(|(x, y)| f64::from(x - y).powi(2))
+                    .sum::<f64>()
+            })
+            .sum();
+        sum / (3.0 * self.masked)
+    }
 }
 
 /// Coherence against the exemplar at half-pixel positions too (native only, like the metric).

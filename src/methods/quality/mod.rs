@@ -132,12 +132,22 @@ pub fn sub_pixel_coherence(exemplar: &Image, output: &Image) -> Result<f64> {
 }
 
 /// Mean over the patches of `from` (stride 2) of the per-value MSE to the nearest patch of `to`.
-/// Each search starts from the matches of the query to the left and the one above, moved on by
-/// the stride (see [`PatchIndex::nearest_from`]).
 fn directed(from: &Image, to: &Image) -> f64 {
+    let (mut total, mut count) = (0.0f64, 0usize);
+    directed_each(from, to, |_, _, distance| {
+        total += distance;
+        count += 1;
+    });
+    total / count as f64
+}
+
+/// Calls `visit(x, y, distance)` for every patch of `from` (top-left corner, stride 2, row by
+/// row) with the per-value MSE to its nearest patch of `to`. Each search starts from the matches
+/// of the query to the left and the one above, moved on by the stride (see
+/// [`PatchIndex::nearest_from`]).
+fn directed_each(from: &Image, to: &Image, mut visit: impl FnMut(usize, usize, f64)) {
     let index = PatchIndex::new(to.data(), to.width(), to.height(), PATCH);
     let values = (PATCH * PATCH * 3) as f64;
-    let (mut total, mut count) = (0.0f64, 0usize);
     let columns = (from.width() - PATCH) / STRIDE + 1;
     // The matches of the previous row of queries, by column.
     let mut above: Vec<Option<(usize, usize)>> = vec![None; columns];
@@ -154,11 +164,23 @@ fn directed(from: &Image, to: &Image) -> f64 {
             let (distance, at) = index.nearest_from(from.data(), from.width(), x, y, &hints);
             left = Some(at);
             above[column] = Some(at);
-            total += f64::from(distance) / values;
-            count += 1;
+            visit(x, y, f64::from(distance) / values);
         }
     }
-    total / count as f64
+}
+
+/// Coherence patch by patch: `(x, y, distance)` for every patch that [`quality`]'s coherence
+/// averages (top-left corners, stride 2), so that their mean is the coherence. For bounds that
+/// hold patch by patch, such as how close to a given image any equally coherent image can lie
+/// (`examples/flow_detail.rs`, `BOUND=1`). Native only, like [`sub_pixel_coherence`].
+#[cfg(not(target_arch = "wasm32"))]
+pub fn coherence_by_patch(exemplar: &Image, output: &Image) -> Result<Vec<(usize, usize, f64)>> {
+    quality(exemplar, output)?;
+    let ex = exemplar.with_channels(3)?;
+    let out = output.with_channels(3)?;
+    let mut patches = Vec::new();
+    directed_each(&out, &ex, |x, y, d| patches.push((x, y, d)));
+    Ok(patches)
 }
 
 /// [`directed`] to the nearest patch of any of `to`.
@@ -239,6 +261,37 @@ mod tests {
         assert!(plain > 1e-3 && sub < 1e-9, "plain {plain}, sub-pixel {sub}");
         assert!(sub_pixel_coherence(&ex, &ex).unwrap() < 1e-9);
         assert!(sub_pixel_coherence(&ex, &Image::new(4, 4, 3).unwrap()).is_err());
+    }
+
+    #[test]
+    #[cfg(not(target_arch = "wasm32"))]
+    fn coherence_by_patch_is_the_brute_force_nearest_patch_and_averages_to_coherence() {
+        let ex = sample("gravel_64").crop(0, 0, 24, 20).unwrap();
+        let out = noise(17, 15, 3, 9);
+        let (ex3, out3) = (ex.with_channels(3).unwrap(), out.with_channels(3).unwrap());
+        let patches = coherence_by_patch(&ex, &out).unwrap();
+        // Corners 0, 2, .., 10 across and 0, 2, .., 8 down.
+        assert_eq!(patches.len(), 6 * 5);
+        for &(x, y, d) in &patches {
+            let mut best = f64::INFINITY;
+            for ey in 0..=ex.height() - PATCH {
+                for ex_x in 0..=ex.width() - PATCH {
+                    let mut sum = 0.0f64;
+                    for dy in 0..PATCH {
+                        for dx in 0..PATCH {
+                            let (a, b) =
+                                (out3.pixel(x + dx, y + dy), ex3.pixel(ex_x + dx, ey + dy));
+                            sum += (0..3).map(|k| f64::from(a[k] - b[k]).powi(2)).sum::<f64>();
+                        }
+                    }
+                    best = best.min(sum / (PATCH * PATCH * 3) as f64);
+                }
+            }
+            assert!((d - best).abs() < 1e-5, "patch at {x},{y}: {d} vs {best}");
+        }
+        let mean = patches.iter().map(|p| p.2).sum::<f64>() / patches.len() as f64;
+        let coherence = quality(&ex, &out).unwrap().coherence;
+        assert!((mean - coherence).abs() < 1e-12, "{mean} vs {coherence}");
     }
 
     #[test]
