@@ -69,7 +69,7 @@ fn features(name: &str) -> u32 {
     let options = FeatureOptions {
         output_width: 96,
         output_height: 96,
-        patch_size: 32,
+        patch_size: Some(32),
         seed: 3,
         ..FeatureOptions::default()
     };

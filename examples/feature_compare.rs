@@ -58,7 +58,7 @@ fn main() {
                     FeatureOptions {
                         seed,
                         warp,
-                        patch_size: patch,
+                        patch_size: Some(patch),
                         placement: std::env::var("PLACEMENT").map_or(
                             FeaturePlacement::Graphcut,
                             |v| {

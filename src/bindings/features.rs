@@ -322,9 +322,7 @@ fn read_options(value: &JsValue) -> JsResult<FeatureOptions> {
         output_height: js
             .integer("outputHeight", 1, 8192)?
             .map_or(d.output_height, |v| v as usize),
-        patch_size: js
-            .integer("patchSize", 1, 4096)?
-            .map_or(d.patch_size, |v| v as usize),
+        patch_size: js.integer("patchSize", 1, 4096)?.map(|v| v as usize),
         overlap: js.integer("overlap", 1, 4096)?.map(|v| v as usize),
         feature_weight: js
             .number("featureWeight")?

@@ -78,3 +78,28 @@ test('the warp box works with the scan placement only, the placement anatomy wit
   assert.equal(await page.isDisabled('#fg-anatomy-on'), false);
   assert.deepEqual(errors, []);
 });
+
+test('an uploaded exemplar smaller than the default patch runs with the options untouched', async () => {
+  const { page, errors } = demo;
+  // A 48x48 crop of tiles_64, made on a canvas: the patch field still says 64.
+  const png = await page.evaluate(async () => {
+    const image = new Image();
+    image.src = './samples/tiles_64.png';
+    await image.decode();
+    const canvas = document.createElement('canvas');
+    canvas.width = canvas.height = 48;
+    canvas.getContext('2d').drawImage(image, 0, 0);
+    const blob = await new Promise((done) => canvas.toBlob(done, 'image/png'));
+    return Array.from(new Uint8Array(await blob.arrayBuffer()));
+  });
+  await page.setInputFiles('#upload', { name: 'small.png', mimeType: 'image/png', buffer: Buffer.from(png) });
+  await page.waitForSelector('body[data-exemplar="small.png"]');
+  // The field back at its default (the first test set 32).
+  await page.fill('#fg-patch', '64');
+  await page.click('#run');
+  await page.waitForSelector('body[data-features-done="true"]', { timeout: 120_000 });
+  assert.equal(await page.isHidden('#error'), true);
+  assert.doesNotMatch(await page.textContent('#fg-readout'), /error|larger than/i);
+  await page.screenshot({ path: `${RESULTS}/features-small-exemplar.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});

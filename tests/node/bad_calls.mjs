@@ -190,7 +190,10 @@ export const BAD_CALLS = [
     return api.FeatureSynthesis.withFeatureMap(ex(), map, { outputWidth: 32, outputHeight: 32, patchSize: 16 }).step();
   }, /feature map|size/],
   ['FeatureSynthesis.withFeatureMap: an Exemplar as map', () => api.FeatureSynthesis.withFeatureMap(ex(), ex(), {}), /FeatureMap/],
-  ['FeatureSynthesis: patch larger than the exemplar', () => new api.FeatureSynthesis(ex(), { patchSize: 64, outputWidth: 64, outputHeight: 64 }), /patch|exemplar/],
+  ['FeatureSynthesis: patch larger than the exemplar', () => new api.FeatureSynthesis(ex(), { patchSize: 64, outputWidth: 64, outputHeight: 64 }), 'patchSize: 64 is larger than the 32x32 exemplar'],
+  // Without a patchSize the default patch (64) is fitted to a smaller exemplar, as graph cut takes one.
+  ['FeatureSynthesis: an exemplar under the default patch, no patchSize', () => exercise(new api.FeatureSynthesis(ex(), { outputWidth: 48, outputHeight: 48 })), OK],
+  ['FeatureSynthesis: an exemplar under the smallest patch', () => new api.FeatureSynthesis(ex(15), {}), 'exemplar size 15x15: feature-guided synthesis needs at least 16x16'],
   // Found by the fuzz target `session_steps` (a panic natively): graph-cut placement fills an
   // output narrower than one patch.
   ['FeatureSynthesis: output narrower than a patch', () => exercise(new api.FeatureSynthesis(ex(), { outputWidth: 8, outputHeight: 40, patchSize: 16 })), OK],

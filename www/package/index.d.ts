@@ -697,7 +697,7 @@ export interface FeatureSynthesisOptions extends DetectFeaturesOptions {
   placement?: 'graphcut' | 'scan';
   /** Graph-cut placement: seam cost per pixel where the two patches disagree on a curve, in units of the exemplar's feature contrast, 0..100. Default: 1. */
   seamFeatureWeight?: number;
-  /** 16..128, at most the exemplar's side (scan placement). Default: 64. */
+  /** 16..128, at most the exemplar's shorter side (scan placement; graph-cut placement's feature band is a quarter of it). Default: 64, or the exemplar's shorter side when smaller (the exemplar needs at least 16x16). */
   patchSize?: number;
   /** Context-region width (scan), or the width of the feature-cost band (graphcut). Default: a quarter of patchSize. */
   overlap?: number;

@@ -179,12 +179,14 @@ export function createPanel(ui) {
   }
 
   function options() {
+    const patchField = ui.$('fg-patch');
     return {
       outputWidth: ui.outputWidth(),
       outputHeight: ui.outputHeight(),
       seed: ui.seed(),
       placement: ui.$('fg-placement').value,
-      patchSize: Number(ui.$('fg-patch').value),
+      // Left at its default, the library fits the patch to an exemplar smaller than 64.
+      ...(patchField.value === patchField.defaultValue ? {} : { patchSize: Number(patchField.value) }),
       warp: ui.$('fg-warp').checked,
       // The map as edited goes along with these (see features-map.js); without one (its
       // detection failed) the session detects its own with the same options.

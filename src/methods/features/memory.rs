@@ -39,7 +39,7 @@ pub fn working_set(
     let (w, h) = (options.output_width, options.output_height);
     let n = w as u64 * h as u64;
     let c = channels as u64;
-    let step = options.patch_size.saturating_sub(options.zone()).max(1);
+    let step = options.patch().saturating_sub(options.zone()).max(1);
     let origins = (w.div_ceil(step) + 1) as u64 * (h.div_ceil(step) + 1) as u64;
     let pixels = |inputs: &[(usize, usize)]| -> u64 {
         inputs.iter().map(|&(w, h)| w as u64 * h as u64).sum()
@@ -61,7 +61,7 @@ pub fn working_set(
     match options.placement {
         FeaturePlacement::Graphcut => set.add("feature scratch", n * 8),
         FeaturePlacement::Scan => {
-            let p = options.patch_size;
+            let p = options.patch();
             set.add("seam graph", (p * p) as u64 * GRAPH_BYTES_PER_PATCH_PIXEL);
             let search = inputs
                 .iter()

@@ -51,10 +51,10 @@ pub struct FeatureOptions {
     /// one. Default: 1.
     pub seam_feature_weight: f32,
     /// Patch side (scan placement; graph-cut placement uses the whole exemplar, and the
-    /// feature-cost band is as wide as the scan overlap). Default: 64, the top of the paper's 32 to 64: on the six structured samples
-    /// (128x128 to 256x256) it broke the fewest features (fewer than plain graph cut on 5 of
-    /// 6, against 4 of 6 at 32 and 3 of 6 at 48).
-    pub patch_size: usize,
+    /// feature-cost band is as wide as the scan overlap). Default (`None`): [`DEFAULT_PATCH`],
+    /// or the exemplar's shorter side when that is smaller, so that an exemplar of 16 to 63
+    /// pixels works without options, as it does in graph cut; see [`FeatureOptions::fitted`].
+    pub patch_size: Option<usize>,
     /// Width of the context region. Default (None): a quarter of the patch, so the context
     /// holds enough feature pixels to match.
     pub overlap: Option<usize>,
@@ -80,7 +80,32 @@ pub struct FeatureOptions {
     pub memory_budget_mib: usize,
 }
 
+/// The default patch side: the top of the paper's 32 to 64. On the six structured samples
+/// (128x128 to 256x256) it broke the fewest features (fewer than plain graph cut on 5 of 6,
+/// against 4 of 6 at 32 and 3 of 6 at 48).
+pub const DEFAULT_PATCH: usize = 64;
+
+/// The smallest patch side, and so the smallest exemplar side.
+pub const MIN_PATCH: usize = 16;
+
 impl FeatureOptions {
+    /// The patch side: the option, or [`DEFAULT_PATCH`] before [`FeatureOptions::fitted`].
+    #[must_use]
+    pub fn patch(&self) -> usize {
+        self.patch_size.unwrap_or(DEFAULT_PATCH)
+    }
+
+    /// These options with the default patch side fitted to a `ew` x `ew` exemplar: the
+    /// exemplar's shorter side when it is under [`DEFAULT_PATCH`]. A patch side the caller chose
+    /// is kept (and [`FeatureOptions::validate`] refuses it if it does not fit).
+    #[must_use]
+    pub fn fitted(mut self, ew: usize, eh: usize) -> Self {
+        if self.patch_size.is_none() {
+            self.patch_size = Some(DEFAULT_PATCH.min(ew.min(eh)));
+        }
+        self
+    }
+
     /// How many candidates get the feature cost: the option, or its default for the placement.
     #[must_use]
     pub fn candidates(&self) -> usize {
@@ -98,7 +123,7 @@ impl Default for FeatureOptions {
             output_height: 256,
             placement: FeaturePlacement::Graphcut,
             seam_feature_weight: 1.0,
-            patch_size: 64,
+            patch_size: None,
             overlap: None,
             feature_weight: 0.5,
             warp: true,
@@ -115,39 +140,44 @@ impl Default for FeatureOptions {
 impl FeatureOptions {
     #[must_use]
     pub fn zone(&self) -> usize {
-        self.overlap.unwrap_or((self.patch_size / 4).max(2))
+        self.overlap.unwrap_or((self.patch() / 4).max(2))
     }
 
+    /// Checks the options against a `ew` x `eh` exemplar (after [`FeatureOptions::fitted`]).
     pub(super) fn validate(&self, ew: usize, eh: usize) -> Result<()> {
         check_size("output", self.output_width, self.output_height)?;
         crate::core::budget::validate_budget(self.memory_budget_mib)?;
-        if !(16..=128).contains(&self.patch_size) {
-            return Err(Error::InvalidParameter {
-                name: "patchSize",
-                reason: format!("must be between 16 and 128, got {}", self.patch_size),
+        if ew.min(eh) < MIN_PATCH {
+            return Err(Error::InvalidSize {
+                what: "exemplar",
+                width: ew,
+                height: eh,
+                reason: format!(
+                    "feature-guided synthesis needs at least {MIN_PATCH}x{MIN_PATCH} (its smallest patch)"
+                ),
             });
         }
-        if self.patch_size > ew.min(eh) {
+        let patch = self.patch();
+        if !(MIN_PATCH..=128).contains(&patch) {
             return Err(Error::InvalidParameter {
                 name: "patchSize",
-                reason: format!("{} is larger than the {ew}x{eh} exemplar", self.patch_size),
+                reason: format!("must be between {MIN_PATCH} and 128, got {patch}"),
+            });
+        }
+        if patch > ew.min(eh) {
+            return Err(Error::InvalidParameter {
+                name: "patchSize",
+                reason: format!("{patch} is larger than the {ew}x{eh} exemplar"),
             });
         }
         if self.placement == FeaturePlacement::Scan {
-            check_scan_geometry(
-                self.output_width,
-                self.output_height,
-                self.patch_size,
-                self.zone(),
-                2,
-            )?;
-        } else if 2 * self.zone() >= self.patch_size || self.zone() < 2 {
+            check_scan_geometry(self.output_width, self.output_height, patch, self.zone(), 2)?;
+        } else if 2 * self.zone() >= patch || self.zone() < 2 {
             return Err(Error::InvalidParameter {
                 name: "overlap",
                 reason: format!(
-                    "must be between 2 and {} for patches of {}, got {}",
-                    (self.patch_size - 1) / 2,
-                    self.patch_size,
+                    "must be between 2 and {} for patches of {patch}, got {}",
+                    (patch - 1) / 2,
                     self.zone()
                 ),
             });

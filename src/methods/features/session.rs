@@ -95,13 +95,14 @@ impl FeatureSynthesis {
     /// Detects the exemplar's feature map (or takes `map`, e.g. one edited by hand) and those of
     /// the extra inputs.
     pub fn new(exemplar: &Image, map: Option<FeatureMap>, options: FeatureOptions) -> Result<Self> {
+        let options = options.fitted(exemplar.width(), exemplar.height());
         options.validate(exemplar.width(), exemplar.height())?;
         // The inputs' images first, so that the budget is checked before any detection (over a
         // photo, detection and the indexes are most of the set-up's time and memory).
         let mut extras = Vec::new();
         for d in &options.extra_inputs {
             let image = d.apply(exemplar)?;
-            if image.width() >= options.patch_size && image.height() >= options.patch_size {
+            if image.width() >= options.patch() && image.height() >= options.patch() {
                 extras.push(image);
             }
         }
@@ -171,9 +172,9 @@ impl FeatureSynthesis {
             }
             None
         };
-        let step = options.patch_size - options.zone();
-        let ys = scan_origins(h, options.patch_size, step);
-        let xs = scan_origins(w, options.patch_size, step);
+        let step = options.patch() - options.zone();
+        let ys = scan_origins(h, options.patch(), step);
+        let xs = scan_origins(w, options.patch(), step);
         Ok(FeatureSynthesis {
             output: Image::new(w, h, exemplar.channels())?,
             filled: vec![false; w * h],
@@ -350,7 +351,7 @@ impl FeatureSynthesis {
     }
 
     fn place(&mut self, px: usize, py: usize) -> Result<FeatureEvent> {
-        let p = self.options.patch_size;
+        let p = self.options.patch();
         let (w, h) = (self.options.output_width, self.options.output_height);
         let c = self.output.channels();
         let at = |x: usize, y: usize| (py + y) * w + px + x;

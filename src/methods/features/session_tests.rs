@@ -24,7 +24,7 @@ mod synthesis {
         let options = FeatureOptions {
             output_width: 100,
             output_height: 90,
-            patch_size: 32,
+            patch_size: Some(32),
             placement: FeaturePlacement::Scan,
             ..FeatureOptions::default()
         };
@@ -50,6 +50,51 @@ mod synthesis {
     }
 
     #[test]
+    fn the_default_patch_fits_an_exemplar_smaller_than_it() {
+        // 40x40 and a 100x24 strip: without a patchSize they run under both placements (as
+        // graph cut does); a patchSize the caller chose that does not fit is still refused, and
+        // an exemplar under the smallest patch is refused by its size.
+        let gravel = sample("gravel_64");
+        for (w, h) in [(40, 40), (64, 24)] {
+            let ex = gravel.crop(0, 0, w, h).unwrap();
+            for placement in [FeaturePlacement::Graphcut, FeaturePlacement::Scan] {
+                let options = FeatureOptions {
+                    output_width: 72,
+                    output_height: 64,
+                    placement,
+                    ..FeatureOptions::default()
+                };
+                let (img, events, _) = run(&ex, options);
+                assert_eq!((img.width(), img.height()), (72, 64));
+                assert!(events.last().unwrap().done, "{w}x{h} {placement:?}");
+                assert!(img.data().chunks(3).all(|p| p.iter().sum::<f32>() > 0.0));
+            }
+        }
+        let ex = gravel.crop(0, 0, 40, 40).unwrap();
+        let chosen = FeatureOptions {
+            patch_size: Some(48),
+            ..FeatureOptions::default()
+        };
+        let msg = FeatureSynthesis::new(&ex, None, chosen)
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(
+            msg.contains("patchSize: 48 is larger than the 40x40"),
+            "{msg}"
+        );
+        let tiny = gravel.crop(0, 0, 15, 30).unwrap();
+        let msg = FeatureSynthesis::new(&tiny, None, FeatureOptions::default())
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(
+            msg.contains("exemplar size 15x30") && msg.contains("16x16"),
+            "{msg}"
+        );
+    }
+
+    #[test]
     fn without_features_it_matches_colour_only_and_says_so() {
         for placement in [FeaturePlacement::Scan, FeaturePlacement::Graphcut] {
             colour_only(placement);
@@ -62,7 +107,7 @@ mod synthesis {
         let options = FeatureOptions {
             output_width: 64,
             output_height: 64,
-            patch_size: 16,
+            patch_size: Some(16),
             placement,
             ..FeatureOptions::default()
         };
@@ -87,21 +132,21 @@ mod synthesis {
         };
         assert!(
             err(FeatureOptions {
-                patch_size: 8,
+                patch_size: Some(8),
                 ..FeatureOptions::default()
             })
             .contains("patchSize")
         );
         assert!(
             err(FeatureOptions {
-                patch_size: 100,
+                patch_size: Some(100),
                 ..FeatureOptions::default()
             })
             .contains("larger than the 64x64")
         );
         assert!(
             err(FeatureOptions {
-                patch_size: 32,
+                patch_size: Some(32),
                 feature_weight: f32::NAN,
                 ..FeatureOptions::default()
             })
@@ -109,7 +154,7 @@ mod synthesis {
         );
         assert!(
             err(FeatureOptions {
-                patch_size: 32,
+                patch_size: Some(32),
                 overlap: Some(20),
                 ..FeatureOptions::default()
             })
@@ -120,7 +165,7 @@ mod synthesis {
             &ex,
             Some(map),
             FeatureOptions {
-                patch_size: 32,
+                patch_size: Some(32),
                 ..FeatureOptions::default()
             },
         )
@@ -154,7 +199,7 @@ mod graphcut_placement {
         let options = FeatureOptions {
             output_width: 150,
             output_height: 110,
-            patch_size: 32,
+            patch_size: Some(32),
             ..FeatureOptions::default()
         };
         let mut s = FeatureSynthesis::new(&sample("tiles_64"), None, options).unwrap();
@@ -177,7 +222,7 @@ mod graphcut_placement {
         let options = FeatureOptions {
             output_width: 100,
             output_height: 90,
-            patch_size: 32,
+            patch_size: Some(32),
             ..FeatureOptions::default()
         };
         assert_eq!(options.placement, FeaturePlacement::Graphcut);
@@ -222,7 +267,7 @@ mod masks {
         let options = FeatureOptions {
             output_width: 96,
             output_height: 96,
-            patch_size: 32,
+            patch_size: Some(32),
             placement: FeaturePlacement::Scan,
             ..FeatureOptions::default()
         };
