@@ -410,7 +410,7 @@ export interface FlowAnimationOptions {
   frames?: number;
   /** Weight of the flow (soft-constraint) energy, eq. 3. Default: 0.2. */
   lambda?: number;
-  /** Neighbourhood sizes of the frames after the first; sizes wider than the exemplar or the frame are skipped. Default: [32, 16, 8]. */
+  /** Neighbourhood sizes of the frames after the first; sizes that do not fit the exemplar (4 widths) or the frame are skipped; where none fits, the smallest at most half the exemplar. Default: [32, 16, 8]. */
   frameSizes?: number[];
   /** Iterations per size per frame; the last one's M-step only measures its matches (it reports 0 changed). Default: 3. */
   frameIterations?: number;

@@ -4,7 +4,7 @@ use super::field::FlowField;
 use super::generators::FlowSpec;
 use crate::core::{Error, Result};
 use crate::methods::optimization;
-use crate::methods::optimization::schedule::FIT_RATIO;
+use crate::methods::optimization::schedule::{FIT_RATIO, fallback_size};
 use crate::solvers::nn::Search;
 
 /// Where the flow fields come from.
@@ -122,7 +122,8 @@ impl FlowOptions {
     /// The frame sizes the frames use, largest first: those that fit the exemplar by texture
     /// optimisation's rule (its shorter side at least `FIT_RATIO` widths, so the defaults are the
     /// first frame's full-resolution sizes) and are no wider than the frame; the others are
-    /// skipped.
+    /// skipped. Where none fits, texture optimisation's fallback (`schedule::fallback_size`):
+    /// the smallest size at most half the exemplar.
     #[must_use]
     pub fn fitting_frame_sizes(&self, exemplar_width: usize, exemplar_height: usize) -> Vec<usize> {
         let exemplar_side = exemplar_width.min(exemplar_height);
@@ -135,6 +136,9 @@ impl FlowOptions {
             .collect();
         sizes.sort_unstable_by(|a, b| b.cmp(a));
         sizes.dedup();
+        if sizes.is_empty() {
+            sizes.extend(fallback_size(&self.frame_sizes, exemplar_side, frame_side));
+        }
         sizes
     }
 
@@ -178,7 +182,7 @@ impl FlowOptions {
             return invalid(
                 "frameSizes",
                 format!(
-                    "none of {:?} fits both the exemplar ({exemplar_width}x{exemplar_height}; a size needs {FIT_RATIO} times its width) and the frame ({}x{})",
+                    "none of {:?} fits both the exemplar ({exemplar_width}x{exemplar_height}; a size needs {FIT_RATIO} times its width, or twice where none does) and the frame ({}x{})",
                     self.frame_sizes, self.output_width, self.output_height
                 ),
             );

@@ -441,6 +441,11 @@ fn frame_sizes_wider_than_the_exemplar_or_frame_are_skipped() {
         ..opts
     };
     assert_eq!(explicit.fitting_frame_sizes(64, 64), vec![16, 8, 2]);
+    // Where none fits by 4 widths, texture optimisation's fallback: the smallest size at most
+    // half the exemplar (a 256x24 strip, a 20x20 exemplar), and none under 16.
+    assert_eq!(opts.fitting_frame_sizes(256, 24), vec![8]);
+    assert_eq!(opts.fitting_frame_sizes(20, 20), vec![8]);
+    assert_eq!(opts.fitting_frame_sizes(15, 15), Vec::<usize>::new());
     // The default ladder on a 40x40 exemplar: 32 and 16 are skipped, the animation runs.
     let exemplar = noise(40, 40, 3, 4);
     let (frames, _, events) = animate(
@@ -456,6 +461,21 @@ fn frame_sizes_wider_than_the_exemplar_or_frame_are_skipped() {
     assert!(
         events.iter().all(|e| e.size <= 16),
         "only sizes that fit run"
+    );
+    // A 24x24 exemplar: texture optimisation falls back to 8 for frame 1, and so do the frames.
+    let (frames, _, events) = animate(
+        &noise(24, 24, 3, 5),
+        vortex(1.0),
+        FlowOptions {
+            output_width: 32,
+            output_height: 32,
+            ..options(2)
+        },
+    );
+    assert_eq!(frames.len(), 2);
+    assert!(
+        events.iter().skip(1).all(|e| e.size == 8),
+        "the fallback size"
     );
 }
 

@@ -74,14 +74,8 @@ pub fn plan(
         }
     }
     if levels.is_empty() {
-        // A small exemplar (16x16 with the default sizes): fall back to the smallest size that
-        // fits at half the exemplar, at full resolution only.
         let (ow, oh, ew, eh) = dims_at(0);
-        let Some(&size) = sizes
-            .iter()
-            .rev()
-            .find(|&&s| 2 * s <= ew.min(eh) && s <= ow.min(oh))
-        else {
+        let Some(size) = fallback_size(&sizes, ew.min(eh), ow.min(oh)) else {
             return Err(Error::InvalidParameter {
                 name: "neighbourhoodSizes",
                 reason: format!(
@@ -93,6 +87,19 @@ pub fn plan(
         levels.push(level(0, size));
     }
     Ok(levels)
+}
+
+/// Where no size fits by [`FIT_RATIO`] (an exemplar of 16 to 31 pixels on its shorter side with
+/// the default sizes): the smallest of `sizes` that is at most half the exemplar's shorter side
+/// and no wider than the output's, used at full resolution only. Flow frames fall back the same
+/// way, so an exemplar that texture optimisation takes animates too.
+#[must_use]
+pub fn fallback_size(sizes: &[usize], exemplar_side: usize, output_side: usize) -> Option<usize> {
+    sizes
+        .iter()
+        .copied()
+        .filter(|&s| 2 * s <= exemplar_side && s <= output_side)
+        .min()
 }
 
 /// Positions (top-left corners, along one axis of length `len`) of the neighbourhood grid X†:
