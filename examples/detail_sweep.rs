@@ -1,7 +1,7 @@
 //! Texture optimization over a folder of exemplars with every quality metric, the flat fraction
 //! first: `cargo run --profile explore --example detail_sweep -- [DIR] [SIZE] [SEEDS]`
 //! (defaults `www/samples 256 1,2,3`). Options come from the environment, by their JS names
-//! (`MU=10 M_STEP_MU=1 COMPLETENESS=0 R=2 HISTOGRAM_MATCHING=0 ITERATIONS=3`). Prints one line per exemplar
+//! (`MU=10 M_STEP_MU=1 COMPLETENESS=0 R=2 HISTOGRAM_MATCHING=0 ITERATIONS=3 START=patches`). Prints one line per exemplar
 //! (mean over seeds) and the worst cases; `ONLY=paving,stone_64` picks exemplars by prefix;
 //! `TRACE=1` prints every step of the first seed with the flat fraction at the end of each
 //! level; `SHEET=file.png` writes every first-seed output side by side (one row per exemplar
@@ -41,6 +41,10 @@ fn options(size: usize, seed: u64) -> Options {
     }
     if let Some(v) = env_f32("ITERATIONS") {
         o.iterations = v as usize;
+    }
+    if let Ok(v) = std::env::var("START") {
+        o.start =
+            texsynth::methods::optimization::Start::from_name(&v).expect("graphcut or patches");
     }
     o
 }

@@ -14,7 +14,7 @@ use crate::methods::optimization::SoftConstraints;
 use crate::methods::optimization::level::LevelSolver;
 use crate::methods::optimization::session::Phase;
 use crate::methods::optimization::teaching::{Field, field, offset_map};
-use crate::methods::optimization::{Energy, Event, EventKind, Options, Session};
+use crate::methods::optimization::{Energy, Event, EventKind, Options, Session, Start};
 use crate::solvers::nn::Search;
 
 const KNOWN: &[&str] = &[
@@ -33,6 +33,7 @@ const KNOWN: &[&str] = &[
     "histogramMatching",
     "energy",
     "waveletDetailWeight",
+    "start",
     "memoryBudgetMiB",
 ];
 
@@ -47,6 +48,13 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
             reason: format!("must be 'patchmatch', 'kmeans-tree' or 'exact', got '{name}'"),
         })?,
     };
+    let start = match js.string("start")? {
+        None => d.start,
+        Some(name) => Start::from_name(&name).ok_or_else(|| Error::InvalidParameter {
+            name: "start",
+            reason: format!("must be 'graphcut' or 'patches', got '{name}'"),
+        })?,
+    };
     let energy = match js.string("energy")? {
         None => d.energy,
         Some(name) => Energy::from_name(&name).ok_or_else(|| Error::InvalidParameter {
@@ -56,6 +64,7 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
     };
     Ok(Options {
         memory_budget_mib: js.memory_budget()?,
+        start,
         energy,
         wavelet_detail_weight: js
             .number("waveletDetailWeight")?
@@ -118,9 +127,11 @@ fn event_object(e: &Event) -> JsValue {
     ])
 }
 
-/// The JS name of the half of an EM iteration a step stopped in.
+/// The JS name of the half of an EM iteration a step stopped in (or 'start' while the coarsest
+/// level's graph-cut start is made).
 pub(crate) fn phase_name(phase: Phase) -> &'static str {
     match phase {
+        Phase::Start => "start",
         Phase::FirstMatch => "first-match",
         Phase::EStep => "e-step",
         Phase::MStep => "m-step",

@@ -48,7 +48,8 @@ export const SESSIONS = {
       outputWidth: SIZE, outputHeight: SIZE, seed: SEED, levels: COUNT, neighbourhoodSizes: COUNTS,
       iterations: COUNT, r: REAL, mu: REAL, mStepMu: REAL, search: enumOf('patchmatch', 'kmeans-tree', 'exact'),
       tileable: BOOL, completeness: REAL, histogramMatching: REAL,
-      energy: enumOf('pixels', 'haar', 'daubechies'), waveletDetailWeight: REAL, memoryBudgetMiB: BUDGET,
+      energy: enumOf('pixels', 'haar', 'daubechies'), waveletDetailWeight: REAL, start: enumOf('graphcut', 'patches'),
+      memoryBudgetMiB: BUDGET,
     },
   },
   FlowAnimation: {

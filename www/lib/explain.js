@@ -11,12 +11,16 @@ const WU_YU_2004 = 'Wu & Yu, "Feature Matching and Deformation for Texture Synth
 
 export const EXPLANATIONS = {
   'to-start': {
-    text: 'Texture optimization treats synthesis as energy minimisation: the texture energy (1) sums, over a grid of overlapping neighbourhoods x_p of the output, the distance to the nearest exemplar neighbourhood z_p. Press Step to see one iteration.',
+    text: 'Texture optimization treats synthesis as energy minimisation: the texture energy (1) sums, over a grid of overlapping neighbourhoods x_p of the output, the distance to the nearest exemplar neighbourhood z_p. The coarsest level starts from a quick graph-cut synthesis (graph-cut textures, sub-patch matching; the paper starts at random) so that lattices and large elements begin whole. Press Step to see one iteration.',
     cite: [KWATRA_2005, 'section 3, equation (1) and Algorithm 1', 'the paragraph "We can use the above formulation to perform texture synthesis by iteratively refining an initial estimate..."'],
   },
   'to-level': {
     text: 'A new level (section 3.2): the output is up-sampled or the neighbourhood shrinks, coarse to fine. The energy jumps here, which the paper calls desirable: it helps the algorithm out of poor local minima.',
     cite: [KWATRA_2005, 'section 3.2, Multi-level Synthesis, and Figure 3', 'the paragraph "In Figure 3, we plot the energy of the synthesized texture as a function of number of iterations..."'],
+  },
+  'to-graphcut-start': {
+    text: 'Making the start: on a large output the coarsest level\'s graph-cut synthesis takes several steps. Random exemplar patches (option start: \'patches\') would start every lattice at a phase per patch, and EM only moves what it finds nearby: the paper\'s "misalignment of texture elements".',
+    cite: [KWATRA_2005, 'section 6, the limitation of local minima; the start is graph-cut textures (Kwatra et al. 2003, section 4.1, sub-patch matching)', 'the paragraph "A limitation of our technique is that because it tries to decrease the energy at each iteration, it can get stuck in local minima..."'],
   },
   'to-first-match': {
     text: 'M-step on the new level: every grid node p finds the exemplar neighbourhood z_p nearest to the up-sampled output (a nearest-neighbour search). Shown with step anatomy: the chosen z_p pasted where their nodes are.',

@@ -119,6 +119,8 @@ export interface TextureOptimizationOptions {
   energy?: 'pixels' | 'haar' | 'daubechies';
   /** Weight of the wavelet detail bands (with a wavelet `energy`). Default: 4. */
   waveletDetailWeight?: number;
+  /** How the coarsest level starts: a graph-cut synthesis at its size, which keeps lattices and large elements whole, or random exemplar patches (closer to the paper's random start). Default: 'graphcut'. */
+  start?: 'graphcut' | 'patches';
 }
 
 /** What one `TextureOptimization.step()` did. */
@@ -142,8 +144,8 @@ export interface TextureOptimizationEvent {
   totalIterations: number;
   /** Conjugate-gradient iterations of the gradient solve. */
   solverIterations: number;
-  /** Where the step stopped: the M-step on a level's up-sampled output, the E-step or the M-step. */
-  phase: 'first-match' | 'e-step' | 'm-step';
+  /** Where the step stopped: making the coarsest level's graph-cut start, the M-step on a level's up-sampled output, the E-step or the M-step. */
+  phase: 'start' | 'first-match' | 'e-step' | 'm-step';
   /** Share of the iteration done, 0 to 1 (1 for a whole iteration). */
   progress: number;
 }

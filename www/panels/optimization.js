@@ -301,13 +301,14 @@ export function createPanel(ui) {
       document.body.dataset.half = lastHalf;
       // What this step did, in the paper's terms: a level change, an E-step, an M-step.
       const whole = event.kind === 'level' ? 'to-level' : event.kind === 'done' ? 'to-done' : 'to-m-step';
-      explain(ui.$('to-explain'), event.kind === 'part' ? `to-${event.phase}` : whole);
+      const part = event.phase === 'start' ? 'to-graphcut-start' : `to-${event.phase}`;
+      explain(ui.$('to-explain'), event.kind === 'part' ? part : whole);
       const constraint = paint ? ` · constraint error ${session.getter('constraintEnergy').toPrecision(3)}` : '';
       // Large outputs split an iteration over several steps (kind 'part'): say how far it is.
       const PHASES = { 'first-match': 'first M-step', 'e-step': 'E-step', 'm-step': 'M-step' };
-      const progress = event.kind === 'part'
-        ? ` (${PHASES[event.phase] ?? event.phase}, ${Math.round(event.progress * 100)}% of the iteration)`
-        : '';
+      const progress = event.kind !== 'part' ? ''
+        : event.phase === 'start' ? ' (making the graph-cut start of the coarsest level)'
+        : ` (${PHASES[event.phase] ?? event.phase}, ${Math.round(event.progress * 100)}% of the iteration)`;
       const figures = event.kind === 'part'
         ? ''
         : ` · energy ${event.energy.toPrecision(4)} · ${event.changed} matches changed`;

@@ -83,6 +83,8 @@ pub enum Stage {
 /// The half of an EM iteration a step stopped in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Phase {
+    /// Making the coarsest level's start (a graph cut, see [`super::initial`]), before any EM.
+    Start,
     /// The M-step that starts a level (on its up-sampled output).
     FirstMatch,
     EStep,

@@ -27,6 +27,6 @@ mod tests;
 mod wavelet_tests;
 
 pub use constraints::SoftConstraints;
-pub use options::Options;
+pub use options::{Options, Start};
 pub use session::{Event, EventKind, Session};
 pub use wavelet_energy::Energy;

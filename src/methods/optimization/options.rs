@@ -4,6 +4,7 @@ use crate::core::budget::{DEFAULT_MEMORY_BUDGET_MIB, validate_budget};
 use crate::core::{Error, Result, error::check_size};
 use crate::solvers::nn::Search;
 
+pub use super::initial::Start;
 pub use super::wavelet_energy::{DEFAULT_DETAIL_WEIGHT, Energy};
 
 /// Everything a texture-optimisation run can be told. Validate with [`Options::validate`].
@@ -62,6 +63,10 @@ pub struct Options {
     /// pixel distance (Parseval) and changes no match; w > 1 stresses multi-scale edges over
     /// mean colour. Ignored with the pixel energy. Default: [`DEFAULT_DETAIL_WEIGHT`].
     pub wavelet_detail_weight: f32,
+    /// How the coarsest level starts (see [`super::initial`]; the paper starts at random): a
+    /// graph-cut synthesis, which keeps lattices and large elements whole, or random exemplar
+    /// patches. Default: graph cut.
+    pub start: Start,
     /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses an
     /// output whose working set would exceed it. Default: 1024.
     pub memory_budget_mib: usize,
@@ -85,6 +90,7 @@ impl Default for Options {
             histogram_matching: 1.0,
             energy: Energy::Pixels,
             wavelet_detail_weight: DEFAULT_DETAIL_WEIGHT,
+            start: Start::Graphcut,
             memory_budget_mib: DEFAULT_MEMORY_BUDGET_MIB,
         }
     }

@@ -3,7 +3,7 @@
 
 use super::constraints::{Constraint, SoftConstraints};
 use super::e_step::edge;
-use super::initial::random_patches;
+use super::initial::{Start, graphcut_start_options, random_patches};
 pub use super::iteration::Phase;
 use super::iteration::{Iteration, StepBudget, Work};
 use super::level::{LevelSetup, LevelSolver, fit_output};
@@ -11,9 +11,11 @@ use super::m_step::PATCHMATCH_PASSES;
 use super::memory::{METHOD, working_set};
 use super::options::{Energy, Options};
 use super::schedule::{Level, plan};
+use crate::core::budget::WorkingSet;
 use crate::core::pyramid::gaussian_pyramid;
 use crate::core::sample::resize_bilinear;
 use crate::core::{Edge, Error, Image, Result, Rng};
+use crate::methods::graphcut;
 use crate::solvers::nn::Pos;
 
 /// What a step did.
@@ -96,6 +98,12 @@ pub struct Session {
     new_level: bool,
     /// How long a step works (see [`StepBudget`]).
     budget: StepBudget,
+    /// The graph-cut start of the coarsest level while it is being made (see
+    /// [`super::initial`]); a large one takes several steps.
+    start: Option<graphcut::Session>,
+    /// The graph-cut start's working set, when the options ask for one: it is live before any
+    /// level's buffers are, so the session's peak is the larger of the two.
+    start_set: Option<WorkingSet>,
 }
 
 impl Session {
@@ -112,7 +120,29 @@ impl Session {
         )?;
         let octaves = levels.iter().map(|l| l.octave).max().unwrap_or(0) + 1;
         let exemplars = gaussian_pyramid(exemplar, octaves, Edge::Clamp)?;
+        let start_set = match options.start {
+            Start::Patches => None,
+            Start::Graphcut => {
+                let first = levels[0];
+                let start = graphcut_start_options(
+                    first.output_width,
+                    first.output_height,
+                    options.tileable,
+                    options.memory_budget_mib,
+                    &mut Rng::new(0),
+                );
+                let set = graphcut::synthesis::estimate(&exemplars[first.octave], &start)?;
+                set.check(
+                    &format!("output {w}x{h} (its graph-cut start)"),
+                    METHOD,
+                    options.memory_budget_mib,
+                )?;
+                Some(set)
+            }
+        };
         Ok(Session {
+            start: None,
+            start_set,
             run: Iteration::default(),
             new_level: false,
             budget: StepBudget::for_pixels(options.output_width * options.output_height),
@@ -202,12 +232,16 @@ impl Session {
     #[must_use]
     pub fn working_set(&self, constraints: bool) -> crate::core::budget::WorkingSet {
         let e = &self.exemplars[0];
-        working_set(
+        let levels = working_set(
             &self.options,
             &self.levels,
             (e.width(), e.height(), e.channels()),
             constraints,
-        )
+        );
+        match &self.start_set {
+            Some(start) if start.bytes() > levels.bytes() => start.clone(),
+            _ => levels,
+        }
     }
 
     /// Channels of the exemplar (and of the output and of constraint targets).
@@ -365,6 +399,7 @@ impl Session {
         let solver = self.solver.as_ref().expect("level entered");
         // A step that completed a half (step anatomy) reports that half, whole.
         let (phase, progress) = match self.run.completed {
+            _ if self.start.is_some() => (Phase::Start, 0.0),
             Some(Phase::FirstMatch) => (Phase::FirstMatch, 0.2),
             Some(Phase::EStep) => (Phase::EStep, 0.4),
             _ => self
@@ -451,15 +486,45 @@ impl Session {
         let solver = self.solver.as_mut().expect("level entered");
         if self.run.idle() {
             if self.output.is_none() {
-                // The coarsest level starts from random exemplar patches (see
-                // [`random_patches`]).
-                self.output = Some(random_patches(
-                    exemplar,
-                    lv.output_width,
-                    lv.output_height,
-                    lv.size,
-                    &mut self.rng,
-                )?);
+                // The coarsest level's start (see [`super::initial`]).
+                let start = match self.options.start {
+                    Start::Patches => random_patches(
+                        exemplar,
+                        lv.output_width,
+                        lv.output_height,
+                        lv.size,
+                        &mut self.rng,
+                    )?,
+                    Start::Graphcut => {
+                        let started = crate::core::clock::now_ms();
+                        let cut = match &mut self.start {
+                            Some(cut) => cut,
+                            None => self.start.insert(graphcut::Session::new(
+                                exemplar,
+                                graphcut_start_options(
+                                    lv.output_width,
+                                    lv.output_height,
+                                    self.options.tileable,
+                                    self.options.memory_budget_mib,
+                                    &mut self.rng,
+                                ),
+                            )?),
+                        };
+                        // Whole graph-cut steps, so that where a large start splits changes
+                        // nothing.
+                        while !cut.step()?.done {
+                            if let Some(ms) = self.budget.split
+                                && crate::core::clock::now_ms() - started >= ms
+                            {
+                                return Ok(None);
+                            }
+                        }
+                        let made = cut.output()?;
+                        self.start = None;
+                        made
+                    }
+                };
+                self.output = Some(start);
                 self.fresh = true;
             }
             let output = self.output.as_ref().expect("made above");
