@@ -122,6 +122,8 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                     optimization::Energy::from_name("daubechies").expect("known"),
                 ])?,
                 wavelet_detail_weight: real(u, 4.0, v)?,
+                start: optimization::Start::from_name(*u.choose(&["graphcut", "patches"])?)
+                    .expect("known"),
                 memory_budget_mib: BUDGET_MIB,
             };
             if let Ok(mut s) = optimization::Session::new(ex, o) {
@@ -353,7 +355,11 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                 placement: FeaturePlacement::from_name(*u.choose(&["graphcut", "scan"])?)
                     .expect("known"),
                 seam_feature_weight: real(u, 1.0, v)?,
-                patch_size: count(u, 24, v)?.clamp(1, 4096),
+                patch_size: if u.arbitrary()? {
+                    Some(count(u, 24, v)?.clamp(1, 4096))
+                } else {
+                    None
+                },
                 overlap: if u.arbitrary()? {
                     Some(count(u, 8, v)?.clamp(1, 4096))
                 } else {

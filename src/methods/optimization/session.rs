@@ -321,7 +321,11 @@ impl Session {
         match &self.output {
             Some(out) if out.width() == w && out.height() == h => Ok(out.clone()),
             Some(out) => resize_bilinear(out, w, h, edge(self.options.tileable)),
-            None => Image::new(w, h, self.exemplars[0].channels()),
+            // A large start takes several steps: its canvas so far (black where uncovered).
+            None => match &self.start {
+                Some(cut) => resize_bilinear(&cut.output()?, w, h, edge(self.options.tileable)),
+                None => Image::new(w, h, self.exemplars[0].channels()),
+            },
         }
     }
 

@@ -732,3 +732,33 @@ fn the_graph_cut_start_is_in_the_memory_estimate() {
     let (cut, patches) = (with(super::Start::Graphcut), with(super::Start::Patches));
     assert!(cut > patches, "{cut} {patches}");
 }
+
+/// While a split graph-cut start is under way, the output shows its canvas so far.
+#[test]
+fn a_split_start_shows_its_canvas() {
+    let exemplar = sample("gravel_64");
+    let mut s = Session::new(
+        &exemplar,
+        Options {
+            output_width: 256,
+            output_height: 256,
+            levels: 1,
+            ..Options::default()
+        },
+    )
+    .unwrap();
+    s.set_step_budget(Some(0.0), 3000);
+    let e = s.step().unwrap();
+    assert_eq!((e.kind, e.phase), (EventKind::Part, super::session::Phase::Start));
+    assert!(s.output().is_none(), "the start is not done");
+    let covered = |s: &Session| {
+        let shown = s.output_full_size().unwrap();
+        shown.data().iter().filter(|&&v| v > 0.0).count()
+    };
+    let first = covered(&s);
+    for _ in 0..3 {
+        s.step().unwrap();
+    }
+    let later = covered(&s);
+    assert!(first > 0 && later > first, "{first} then {later} values shown");
+}
