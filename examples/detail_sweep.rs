@@ -71,8 +71,8 @@ fn main() {
         .collect();
     names.sort_by_key(|n| (n.ends_with("_64"), n.clone()));
     println!(
-        "{:<14} {:>7} {:>10} {:>12} {:>9} {:>8}",
-        "exemplar", "flat", "coherence", "completeness", "histogram", "ms"
+        "{:<14} {:>7} {:>9} {:>10} {:>12} {:>9} {:>8}",
+        "exemplar", "flat", "worst", "coherence", "completeness", "histogram", "ms"
     );
     let mut rows: Vec<(String, f64)> = Vec::new();
     let mut sheet: Vec<(bool, Image)> = Vec::new();
