@@ -749,7 +749,10 @@ fn a_split_start_shows_its_canvas() {
     .unwrap();
     s.set_step_budget(Some(0.0), 3000);
     let e = s.step().unwrap();
-    assert_eq!((e.kind, e.phase), (EventKind::Part, super::session::Phase::Start));
+    assert_eq!(
+        (e.kind, e.phase),
+        (EventKind::Part, super::session::Phase::Start)
+    );
     assert!(s.output().is_none(), "the start is not done");
     let covered = |s: &Session| {
         let shown = s.output_full_size().unwrap();
@@ -760,5 +763,8 @@ fn a_split_start_shows_its_canvas() {
         s.step().unwrap();
     }
     let later = covered(&s);
-    assert!(first > 0 && later > first, "{first} then {later} values shown");
+    assert!(
+        first > 0 && later > first,
+        "{first} then {later} values shown"
+    );
 }
