@@ -105,7 +105,7 @@ export interface TextureOptimizationOptions {
   r?: number;
   /** Weight of the gradient energy (the paper uses 10). Default: 0 (off). */
   mu?: number;
-  /** The M-step's own gradient weight, where it should differ from `mu` (0..1000; not in the paper). At mu = 10 the search matches by gradient almost alone and outputs drift into colour blotches; 1 keeps a search that sees colour. Default: `mu`. */
+  /** The M-step's own gradient weight, where it should differ from `mu` (0..1000; not in the paper). At mu = 10 the search matches by gradient almost alone and outputs drift into colour blotches; 1 keeps a search that sees colour. Default: `mu` up to 1, then 1; set it to `mu` for the paper's single energy. */
   mStepMu?: number;
   /** Nearest-neighbour search. Default: 'patchmatch'. */
   search?: Search;
