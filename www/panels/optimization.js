@@ -23,7 +23,7 @@ const OPTIONS_HTML = `
   </select></label>
   <label title="robust exponent: 2 is least squares, 0.8 the paper's IRLS">r <input id="to-r" type="number" value="0.8" min="0.1" max="2" step="0.1"></label>
   <label title="weight of the gradient energy; 0 is off, the paper uses 10">μ <input id="to-mu" type="number" value="0" min="0" max="100" step="1"></label>
-  <label title="the M-step's own gradient weight (not in the paper); empty: μ up to 1, then 1. Set it to μ for the paper's single energy: at μ = 10 that search matches by gradient almost alone and colours drift into blotches or washes">M-step μ <input id="to-m-step-mu" type="number" value="" placeholder="min(μ, 1)" min="0" max="100" step="1"></label>
+  <label title="the M-step's own gradient weight (not in the paper); empty: μ up to 1, then 1. Set it to μ for the paper's single energy: at μ = 10 that search matches by gradient almost alone and colours drift into blotches or washes">M-step μ <input id="to-m-step-mu" type="number" value="" placeholder="auto" min="0" max="100" step="1"></label>
   <label title="EM iterations per level at most">iterations <input id="to-iterations" type="number" value="5" min="1" max="20" step="1"></label>
   <label><input id="to-tileable" type="checkbox"> tileable</label>
   <label><input id="to-teaching" class="view" type="checkbox"> teaching view</label>
