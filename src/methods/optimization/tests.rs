@@ -408,12 +408,18 @@ fn quality_against_completeness_weight() {
 /// from a 64-pixel sample with large smooth areas to 160x160. Without histogram matching
 /// (`histogram_matching: 0`) paving_64 scores 0.81 here, and 0.997 with mu = 10.
 fn flat_fraction(name: &str, mu: f32) -> f64 {
+    flat_fraction_at(name, mu, 160, 1)
+}
+
+/// The flat fraction of a default-options output of `size` x `size` from sample `name`.
+fn flat_fraction_at(name: &str, mu: f32, size: usize, seed: u64) -> f64 {
     let exemplar = sample(name);
     let (session, _) = run(
         &exemplar,
         Options {
-            output_width: 160,
-            output_height: 160,
+            output_width: size,
+            output_height: size,
+            seed,
             mu,
             ..Options::default()
         },
@@ -461,21 +467,7 @@ fn the_gradient_energys_default_search_keeps_paving_textured() {
     // about 120 px across in the middle (flat fraction 0.224): small neighbourhoods matched by
     // gradient alone agree on zero gradient and not on colour. The default search weight
     // (`search_mu`, 1 at mu = 10) keeps its cells and cracks (0.099).
-    let exemplar = sample("paving_128");
-    let (session, _) = run(
-        &exemplar,
-        Options {
-            output_width: 256,
-            output_height: 256,
-            seed: 2,
-            mu: 10.0,
-            ..Options::default()
-        },
-    );
-    let output = session.output_full_size().unwrap();
-    let flat = crate::methods::quality::quality(&exemplar, &output)
-        .unwrap()
-        .flat;
+    let flat = flat_fraction_at("paving_128", 10.0, 256, 2);
     assert!(
         flat <= 0.20,
         "paving_128, mu 10, seed 2: flat fraction {flat}"
