@@ -22,6 +22,8 @@ pub mod teaching;
 pub mod wavelet_energy;
 
 #[cfg(test)]
+mod detail_tests;
+#[cfg(test)]
 mod start_tests;
 #[cfg(test)]
 mod tests;
