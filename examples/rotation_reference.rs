@@ -12,12 +12,13 @@
 //! energy beyond one resampling's: the other end of the frontier that `flow_detail`'s lambda sweep
 //! moves along.
 
+#[path = "shared/vortex_frame.rs"]
+mod vortex_frame;
+
 use texsynth::core::sample::sample_bicubic;
-use texsynth::core::{Edge, Image, decode};
-use texsynth::methods::flow::{
-    Component, FlowEventKind, FlowKind, FlowOptions, FlowSession, FlowSource, FlowSpec,
-};
+use texsynth::core::{Edge, Image};
 use texsynth::methods::quality::quality;
+use vortex_frame::vortex_frame_one;
 
 /// `image` turned by `angle` radians about its centre, cropped to the central `side` x `side`.
 fn turned(image: &Image, angle: f64, side: usize) -> Image {
@@ -45,25 +46,8 @@ fn main() {
     let name = args.first().map_or("tiles_128", String::as_str);
     let size: usize = args.get(1).map_or(256, |s| s.parse().expect("size"));
     let strength: f64 = args.get(2).map_or(2.0, |s| s.parse().expect("strength"));
-    let path = format!("{}/www/samples/{name}.png", env!("CARGO_MANIFEST_DIR"));
-    let exemplar = decode(&std::fs::read(path).expect("sample")).expect("decodes");
-    let flow = FlowSource::Generator(
-        FlowSpec::new(vec![Component::new(FlowKind::Vortex, strength as f32)]).expect("spec"),
-    );
-    let options = FlowOptions {
-        output_width: size,
-        output_height: size,
-        frames: 2,
-        seed: std::env::var("SEED").map_or(1, |v| v.parse().expect("number")),
-        ..FlowOptions::default()
-    };
-    let mut session = FlowSession::new(&exemplar, flow, options).expect("session");
-    let frame = loop {
-        let event = session.step().expect("step");
-        if matches!(event.kind, FlowEventKind::Frame | FlowEventKind::Done) {
-            break session.frame_image().expect("frame");
-        }
-    };
+    let seed = std::env::var("SEED").map_or(1, |v| v.parse().expect("number"));
+    let (exemplar, _, frame) = vortex_frame_one(name, size, strength as f32, seed);
     let per_frame = strength / (size as f64 / 2.0);
     // The largest square inside the frame at every angle, with a 2-pixel margin for the sampler.
     let side = |n: usize| ((n as f64 / std::f64::consts::SQRT_2) as usize).saturating_sub(4);

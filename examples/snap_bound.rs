@@ -15,36 +15,22 @@
 //! have after one frame: re-synthesising the faults away (what the animation's EM does) costs
 //! flow energy on top.
 
-use texsynth::core::{Edge, Image, decode};
+#[path = "shared/vortex_frame.rs"]
+mod vortex_frame;
+
+use texsynth::core::{Edge, Image};
 use texsynth::methods::flow::warp::warp;
-use texsynth::methods::flow::{
-    Component, FlowKind, FlowOptions, FlowSession, FlowSource, FlowSpec,
-};
 use texsynth::methods::optimization::constraints::Constraint;
 use texsynth::methods::quality::quality;
+use vortex_frame::vortex_frame_one;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let name = args.first().map_or("tiles_128", String::as_str);
     let size: usize = args.get(1).map_or(256, |s| s.parse().expect("size"));
-    let path = format!("{}/www/samples/{name}.png", env!("CARGO_MANIFEST_DIR"));
-    let exemplar = decode(&std::fs::read(path).expect("sample")).expect("decodes");
     let strength = std::env::var("STRENGTH").map_or(2.0, |v| v.parse().expect("number"));
-    let flow = FlowSource::Generator(
-        FlowSpec::new(vec![Component::new(FlowKind::Vortex, strength)]).expect("spec"),
-    );
-    let options = FlowOptions {
-        output_width: size,
-        output_height: size,
-        frames: 2,
-        seed: std::env::var("SEED").map_or(1, |v| v.parse().expect("number")),
-        ..FlowOptions::default()
-    };
-    let mut session = FlowSession::new(&exemplar, flow, options).expect("session");
-    while session.frame() < 1 {
-        session.step().expect("step");
-    }
-    let frame = session.frame_image().expect("frame 1");
+    let seed = std::env::var("SEED").map_or(1, |v| v.parse().expect("number"));
+    let (exemplar, session, frame) = vortex_frame_one(name, size, strength, seed);
     let field = session.field_at(0).expect("field");
     let warped = warp(&frame, &field, Edge::Clamp).expect("warp");
     let q1 = quality(&exemplar, &frame).expect("quality");
