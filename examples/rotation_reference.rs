@@ -3,9 +3,9 @@
 //! `tiles_128 256 2`): makes frame 1 of the flow animation, then frame 1 turned about the
 //! frame's centre by the angle the vortex has turned it at frames 1, 6, 15, 30, 45 and 60
 //! (STRENGTH pixels per frame at half the frame's side: STRENGTH / (SIZE / 2) radians a frame),
-//! resampled once (Catmull-Rom, the warp's sampler). Prints the flat fraction and coherence of
+//! resampled once by the animation's warp (Catmull-Rom). Prints the flat fraction and coherence of
 //! the central square that stays inside the frame at every angle, against the same square of
-//! frame 1 unturned; the exemplar turned likewise, against the exemplar's own centre.
+//! frame 1 unturned; the exemplar turned likewise, against frame 1's coherence.
 //!
 //! An animation that follows the flow exactly is frame 1 turned, so these ratios are where the
 //! coherence of a perfectly followed vortex ends up, with no blur from repeated warps and no flow
@@ -15,30 +15,30 @@
 #[path = "shared/vortex_frame.rs"]
 mod vortex_frame;
 
-use texsynth::core::sample::sample_bicubic;
 use texsynth::core::{Edge, Image};
+use texsynth::methods::flow::FlowField;
+use texsynth::methods::flow::warp::warp;
 use texsynth::methods::quality::quality;
 use vortex_frame::vortex_frame_one;
 
-/// `image` turned by `angle` radians about its centre, cropped to the central `side` x `side`.
+/// `image` turned by `angle` radians about its centre, by the animation's own warp (a field
+/// whose backward step from every pixel is the exact turn back), cropped to the central `side`
+/// x `side`.
 fn turned(image: &Image, angle: f64, side: usize) -> Image {
-    let (w, h) = (image.width() as f64, image.height() as f64);
-    let (cx, cy) = ((w - 1.0) / 2.0, (h - 1.0) / 2.0);
-    let (x0, y0) = ((image.width() - side) / 2, (image.height() - side) / 2);
+    let (w, h) = (image.width(), image.height());
+    let (cx, cy) = ((w as f64 - 1.0) / 2.0, (h as f64 - 1.0) / 2.0);
     let (s, c) = angle.sin_cos();
-    let channels = image.channels();
-    let mut out = Image::new(side, side, channels).expect("image");
-    let mut pixel = vec![0.0f32; channels];
-    for y in 0..side {
-        for x in 0..side {
-            let (px, py) = ((x + x0) as f64 - cx, (y + y0) as f64 - cy);
-            // Backward: the source of the turned pixel is the pixel turned back.
-            let (sx, sy) = (c * px + s * py + cx, -s * px + c * py + cy);
-            sample_bicubic(image, sx as f32, sy as f32, Edge::Clamp, &mut pixel);
-            out.pixel_mut(x, y).copy_from_slice(&pixel);
-        }
-    }
-    out
+    let field = FlowField::from_fn(w, h, |x, y| {
+        let (px, py) = (f64::from(x) - cx, f64::from(y) - cy);
+        // The warp reads q - f(q): f is q minus q turned back.
+        let (sx, sy) = (c * px + s * py, -s * px + c * py);
+        ((px - sx) as f32, (py - sy) as f32)
+    })
+    .expect("field");
+    let turned = warp(image, &field, Edge::Clamp).expect("warp").image;
+    turned
+        .crop((w - side) / 2, (h - side) / 2, side, side)
+        .expect("crop")
 }
 
 fn main() {
