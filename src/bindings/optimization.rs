@@ -149,11 +149,11 @@ impl TextureOptimization {
     /// Plans the schedule for `exemplar` and `options` (all optional): `outputWidth`,
     /// `outputHeight` (256), `seed` (1), `levels` (3), `neighbourhoodSizes` ([32, 16, 8]),
     /// `iterations` per level (5), `r` (0.8), `mu` (0), `mStepMu` (the M-step's own gradient
-    /// weight; default `mu` up to 1, 1 above; set it to `mu` for the
-    /// paper's single energy), `search` ('patchmatch' | 'kmeans-tree' |
-    /// 'exact'), `tileable` (false), `completeness` (1), `histogramMatching` (1), `energy`
-    /// ('pixels' | 'haar' | 'daubechies', default 'pixels': the wavelet texture energy of Shen
-    /// et al. 2009), `waveletDetailWeight` (weight of the wavelet detail bands, default 4).
+    /// weight; default `mu` up to 1, 1 above; set it to `mu` for the paper's single energy),
+    /// `search` ('patchmatch' | 'kmeans-tree' | 'exact'), `tileable` (false), `completeness`
+    /// (1), `histogramMatching` (1), `energy` ('pixels' | 'haar' | 'daubechies', default
+    /// 'pixels': the wavelet texture energy of Shen et al. 2009), `waveletDetailWeight` (weight
+    /// of the wavelet detail bands, default 4).
     /// Unknown keys and impossible values throw.
     #[wasm_bindgen(constructor)]
     pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<TextureOptimization> {

@@ -107,6 +107,7 @@ pub const DEFAULT_COMPLETENESS: f32 = 1.0;
 /// The M-step's gradient weight when `m_step_mu` is not set and `mu` is larger: the weight at
 /// which a gradient value counts as much as a colour value in the search.
 pub const DEFAULT_M_STEP_MU: f32 = 1.0;
+
 /// The smallest exemplar side accepted.
 pub const MIN_EXEMPLAR_SIDE: usize = 16;
 /// Iteration caps above this are refused: a level converges long before.
