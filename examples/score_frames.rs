@@ -11,7 +11,12 @@ use texsynth::methods::quality::quality;
 
 fn gradient_energy(image: &Image) -> f64 {
     let (dx, dy) = gradients(image, Edge::Clamp);
-    let sum: f64 = dx.data().iter().chain(dy.data()).map(|&v| f64::from(v * v)).sum();
+    let sum: f64 = dx
+        .data()
+        .iter()
+        .chain(dy.data())
+        .map(|&v| f64::from(v * v))
+        .sum();
     sum / image.data().len() as f64
 }
 
@@ -32,7 +37,13 @@ fn main() {
                         .expect("decodes");
                 let q = quality(&exemplar, &image).expect("quality");
                 let frame = frame.parse().expect("frame number");
-                (frame, q.flat, q.coherence, gradient_energy(&image), flow.parse().expect("energy"))
+                (
+                    frame,
+                    q.flat,
+                    q.coherence,
+                    gradient_energy(&image),
+                    flow.parse().expect("energy"),
+                )
             })
             .collect();
         let later: Vec<_> = rows.iter().filter(|r| r.0 >= 30).collect();
