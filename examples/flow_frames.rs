@@ -5,7 +5,7 @@
 //!
 //! It uses only the API that the code issue 10 was filed against (69c6703) already had, so
 //! `scripts/flow-at-filing.sh` builds this same file in that commit too: the issue bounds the flow
-//! energy at 1.5x "today's", and this measures what "today's" was. `score_images` scores the
+//! energy at 1.5x "today's", and this measures what "today's" was. `score_frames` scores the
 //! frames of both with today's metrics.
 
 use texsynth::core::{decode, encode_png};

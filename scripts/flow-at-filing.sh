@@ -6,7 +6,7 @@
 # gravel_128 at 128x128; vortex of strength 2, 60 frames, the library's defaults) for seeds 1-3,
 # and scores every frame with today's metrics (examples/score_frames.rs).
 #
-# Usage: ./scripts/flow-at-filing.sh [OUT]   (default OUT: results/flow-at-filing; about 6 minutes)
+# Usage: ./scripts/flow-at-filing.sh [OUT]   (default OUT: results/flow-at-filing; about 5 minutes)
 # OUT/then/SAMPLE-sSEED and OUT/now/SAMPLE-sSEED hold frames 1, 30, 36, ..., 60 and flow.tsv.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
