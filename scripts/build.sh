@@ -17,6 +17,8 @@ node_modules/.bin/wasm-opt -O3 \
   --enable-mutable-globals --enable-reference-types --enable-multivalue \
   pkg/texsynth_bg.wasm -o pkg/texsynth_bg.wasm
 node scripts/make-package-json.mjs
+# The option and event declarations, from the bindings' tables.
+node scripts/make-typings.mjs pkg
 # The hand-written entry points, types, worker wrapper and CLI (www/package/) beside the generated files.
 cp www/package/*.js www/package/*.d.ts pkg/
 chmod +x pkg/cli.js

@@ -8,8 +8,11 @@ use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
 use super::exemplar::Exemplar;
+use super::optimization::output_size;
 use super::options::{OptionsReader, object};
 use super::pixels::{render_into, write_rgba};
+use super::schema::{DONE, EventField, Kind, MEMORY_BUDGET, Opt, Schema, invalid, kind_field};
+use super::session::{JsSession, js_session};
 use crate::core::{Error, Image};
 use crate::methods::design::layers::{
     Layer, LayerDesign as Design, LayerOptions, LayerPlacement, LayerSearch,
@@ -19,18 +22,94 @@ use crate::methods::design::{
     Stroke, StrokeResult, Tileable, TileableOptions, deform,
 };
 
-fn invalid(name: &'static str, reason: impl Into<String>) -> JsError {
-    Error::InvalidParameter {
-        name,
-        reason: reason.into(),
+const fn boolean(key: &'static str, default: &'static str, doc: &'static str) -> Opt {
+    Opt {
+        key,
+        kind: Kind::Boolean,
+        default: Some(default),
+        doc,
     }
-    .into()
 }
+
+const fn number(key: &'static str, default: Option<&'static str>, doc: &'static str) -> Opt {
+    Opt {
+        key,
+        kind: Kind::Number,
+        default,
+        doc,
+    }
+}
+
+/// One deformation object of `deformTexture` and `addLayer` (its TypeScript is the hand-written
+/// union `Deformation`: exactly one key).
+const DEFORMATION_SCHEMA: Schema = Schema {
+    class: "deformation",
+    options_name: "",
+    options: &[
+        number("rotate", None, "Degrees, counter-clockwise."),
+        Opt {
+            key: "shift",
+            kind: Kind::Numbers,
+            default: None,
+            doc: "[dx, dy], whole pixels, wrapping.",
+        },
+        boolean("mirror", "false", "Mirror left to right."),
+        boolean("flip", "false", "Flip top to bottom."),
+        number("scale", None, "Scale factor."),
+    ],
+    required: &[],
+    event_name: "",
+    event: &[],
+};
+
+/// A range `{ from, to, step }` of `deformationSet`.
+const RANGE_SCHEMA: Schema = Schema {
+    class: "range",
+    options_name: "Range",
+    options: &[
+        number("from", None, "First value."),
+        number("to", None, "Last value (included when the steps reach it)."),
+        number("step", None, "Step between values."),
+    ],
+    required: &["from", "to", "step"],
+    event_name: "",
+    event: &[],
+};
+
+pub(crate) const RANGES_SCHEMA: Schema = Schema {
+    class: "deformationSet",
+    options_name: "DeformationRanges",
+    options: &[
+        Opt {
+            key: "rotation",
+            kind: Kind::Value("Range"),
+            default: None,
+            doc: "Rotations, in degrees.",
+        },
+        Opt {
+            key: "scale",
+            kind: Kind::Value("Range"),
+            default: None,
+            doc: "Scale factors.",
+        },
+        Opt {
+            key: "shift",
+            kind: Kind::Value("Range"),
+            default: None,
+            doc: "Shifts along both axes, as a fraction of the size.",
+        },
+        boolean("mirror", "false", "Also the mirrored texture."),
+        boolean("flip", "false", "Also the flipped texture."),
+    ],
+    required: &[],
+    event_name: "",
+    event: &[],
+};
 
 /// One deformation from `{ rotate: 30 }`, `{ shift: [dx, dy] }`, `{ mirror: true }`,
 /// `{ flip: true }` or `{ scale: 1.5 }`.
 fn read_deformation(value: &JsValue) -> JsResult<Option<Deformation>> {
-    let js = OptionsReader::new(value, &["rotate", "shift", "mirror", "flip", "scale"])?;
+    let js = OptionsReader::new(value, &DEFORMATION_SCHEMA)?;
     let mut found = Vec::new();
     if let Some(degrees) = js.number("rotate")? {
         found.push(Deformation::Rotate { degrees });
@@ -56,6 +135,7 @@ fn read_deformation(value: &JsValue) -> JsResult<Option<Deformation>> {
     if let Some(factor) = js.number("scale")? {
         found.push(Deformation::Scale { factor });
     }
+    js.finish()?;
     if found.len() > 1 {
         return Err(invalid(
             "deformation",
@@ -111,7 +191,7 @@ fn read_steps(js: &OptionsReader, name: &'static str) -> JsResult<Option<Steps>>
     if !value.is_object() {
         return Err(invalid(name, "must be a range { from, to, step }"));
     }
-    let r = OptionsReader::new(&value, &["from", "to", "step"])?;
+    let r = OptionsReader::new(&value, &RANGE_SCHEMA)?;
     let need = |v: Option<f64>, key: &str| {
         v.ok_or_else(|| {
             invalid(
@@ -120,11 +200,13 @@ fn read_steps(js: &OptionsReader, name: &'static str) -> JsResult<Option<Steps>>
             )
         })
     };
-    Ok(Some(Steps {
+    let steps = Steps {
         from: need(r.number("from")?, "from")?,
         to: need(r.number("to")?, "to")?,
         step: need(r.number("step")?, "step")?,
-    }))
+    };
+    r.finish()?;
+    Ok(Some(steps))
 }
 
 /// The set of deformed textures I_g1..I_gk (stage 1): one per value of each range,
@@ -133,7 +215,7 @@ fn read_steps(js: &OptionsReader, name: &'static str) -> JsResult<Option<Steps>>
 /// })` (shift as a fraction of the size). Returns `[{ label, exemplar }]`, at most 64.
 #[wasm_bindgen(js_name = deformationSet)]
 pub fn deformation_set(exemplar: &Exemplar, ranges: JsValue) -> JsResult<Array> {
-    let js = OptionsReader::new(&ranges, &["rotation", "scale", "shift", "mirror", "flip"])?;
+    let js = OptionsReader::new(&ranges, &RANGES_SCHEMA)?;
     let ranges = DeformationRanges {
         rotation: read_steps(&js, "rotation")?,
         scale: read_steps(&js, "scale")?,
@@ -141,6 +223,7 @@ pub fn deformation_set(exemplar: &Exemplar, ranges: JsValue) -> JsResult<Array> 
         mirror: js.boolean("mirror")?.unwrap_or(false),
         flip: js.boolean("flip")?.unwrap_or(false),
     };
+    js.finish()?;
     let image = exemplar.image();
     let out = Array::new();
     for d in ranges.expand(image.width(), image.height())? {
@@ -152,13 +235,56 @@ pub fn deformation_set(exemplar: &Exemplar, ranges: JsValue) -> JsResult<Array> 
     Ok(out)
 }
 
+pub(crate) const TILEABLE_SCHEMA: Schema = Schema {
+    class: "TileableTexture",
+    options_name: "TileableOptions",
+    options: &[
+        MEMORY_BUDGET,
+        Opt {
+            key: "overlapX",
+            kind: Kind::Integer { min: 0, max: 4096 },
+            default: None,
+            doc: "Overlap of the horizontal stitch in pixels. Default: a sixth of the width, at most 64.",
+        },
+        Opt {
+            key: "overlapY",
+            kind: Kind::Integer { min: 0, max: 4096 },
+            default: None,
+            doc: "Overlap of the vertical stitch in pixels. Default: a sixth of the height, at most 64.",
+        },
+    ],
+    required: &[],
+    event_name: "TileableEvent",
+    event: &[
+        kind_field("'stitched' | 'done'"),
+        DONE,
+        EventField {
+            key: "axis",
+            ts: "'x' | 'y'",
+            doc: "The stitch made: 'x' joins the left and right edges, 'y' the top and bottom.",
+        },
+        EventField {
+            key: "cut",
+            ts: "number",
+            doc: "Where the stitch's overlap starts.",
+        },
+        EventField {
+            key: "seamCost",
+            ts: "number",
+            doc: "Cost of the stitch's min cut.",
+        },
+    ],
+};
+
 fn read_tileable_options(options: &JsValue) -> JsResult<TileableOptions> {
-    let js = OptionsReader::new(options, &["overlapX", "overlapY", "memoryBudgetMiB"])?;
-    Ok(TileableOptions {
+    let js = OptionsReader::new(options, &TILEABLE_SCHEMA)?;
+    let options = TileableOptions {
         memory_budget_mib: Some(js.memory_budget()?),
-        overlap_x: js.integer("overlapX", 0, 4096)?.map(|v| v as usize),
-        overlap_y: js.integer("overlapY", 0, 4096)?.map(|v| v as usize),
-    })
+        overlap_x: js.size("overlapX")?,
+        overlap_y: js.size("overlapY")?,
+    };
+    js.finish()?;
+    Ok(options)
 }
 
 fn tileable_object(t: &Tileable) -> JsValue {
@@ -180,7 +306,7 @@ fn tileable_object(t: &Tileable) -> JsValue {
 /// Makes an image cyclic (section 4) in one call: `makeTileable(exemplar, { overlapX, overlapY
 /// })` (defaults: a sixth of each side, at most 64). Returns `{ exemplar, cutX, cutY, seamCostX,
 /// seamCostY, seam }` (`seam`: RGBA, red on the stitches); the image is smaller than the input
-/// by the overlaps. For large images use `TileableSession`, which makes one stitch per step.
+/// by the overlaps. For large images use `TileableTexture`, which makes one stitch per step.
 #[wasm_bindgen(js_name = makeTileable)]
 pub fn make_tileable(exemplar: &Exemplar, options: JsValue) -> JsResult<JsValue> {
     let t =
@@ -190,16 +316,49 @@ pub fn make_tileable(exemplar: &Exemplar, options: JsValue) -> JsResult<JsValue>
 
 /// Making an image cyclic one graph cut per step: the horizontal stitch, then the vertical.
 #[wasm_bindgen]
-pub struct TileableSession {
+pub struct TileableTexture {
     session: crate::methods::design::TileableSession,
 }
 
+js_session!(TileableTexture);
+
+/// One stitch per step.
+impl JsSession for TileableTexture {
+    fn step_event(&mut self) -> JsResult<JsValue> {
+        let e = self.session.step()?;
+        TILEABLE_SCHEMA.event(&[
+            ("kind", if e.done { "done" } else { "stitched" }.into()),
+            ("done", e.done.into()),
+            ("axis", if e.vertical { "y" } else { "x" }.into()),
+            ("cut", (e.cut as u32).into()),
+            ("seamCost", e.seam_cost.into()),
+        ])
+    }
+
+    fn is_done(&self) -> bool {
+        self.session.is_done()
+    }
+
+    /// The image as far as it is made (it shrinks by the overlap at each stitch).
+    fn size(&self) -> (usize, usize) {
+        (self.session.image().width(), self.session.image().height())
+    }
+
+    fn memory_bytes(&self) -> u64 {
+        self.session.working_set().bytes()
+    }
+
+    fn render(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        render_into(self.session.image(), target)
+    }
+}
+
 #[wasm_bindgen]
-impl TileableSession {
-    /// `new TileableSession(exemplar, { overlapX, overlapY })`.
+impl TileableTexture {
+    /// `new TileableTexture(exemplar, { overlapX, overlapY })`.
     #[wasm_bindgen(constructor)]
-    pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<TileableSession> {
-        Ok(TileableSession {
+    pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<TileableTexture> {
+        Ok(TileableTexture {
             session: crate::methods::design::TileableSession::new(
                 exemplar.image(),
                 read_tileable_options(&options)?,
@@ -207,55 +366,87 @@ impl TileableSession {
         })
     }
 
-    /// The estimated peak memory of this session, in bytes: what the constructor compared with
-    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
-    #[wasm_bindgen(getter, js_name = memoryEstimate)]
-    pub fn memory_estimate(&self) -> f64 {
-        self.session.working_set().bytes() as f64
-    }
-
-    /// Makes the next stitch: `{ kind: 'stitched' | 'done', done, axis: 'x' | 'y', cut,
-    /// seamCost }`.
-    pub fn step(&mut self) -> JsResult<JsValue> {
-        let e = self.session.step()?;
-        Ok(object(&[
-            ("kind", if e.done { "done" } else { "stitched" }.into()),
-            ("done", e.done.into()),
-            ("axis", if e.vertical { "y" } else { "x" }.into()),
-            ("cut", (e.cut as u32).into()),
-            ("seamCost", e.seam_cost.into()),
-        ]))
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn done(&self) -> bool {
-        self.session.is_done()
-    }
-
-    /// Size of the image as far as it is made (it shrinks by the overlap at each stitch).
-    #[wasm_bindgen(getter)]
-    pub fn width(&self) -> u32 {
-        self.session.image().width() as u32
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn height(&self) -> u32 {
-        self.session.image().height() as u32
-    }
-
-    #[wasm_bindgen(js_name = renderInto)]
-    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
-        render_into(self.session.image(), target)
-    }
-
     /// The finished texture, as `makeTileable` returns it.
     pub fn result(&self) -> JsResult<JsValue> {
         self.session
             .result()
             .map(tileable_object)
-            .ok_or_else(|| invalid("tileable session", "is not done: step() until done"))
+            .ok_or_else(|| invalid("tileable texture", "is not done: step() until done"))
     }
 }
+
+pub(crate) const BRUSH_SCHEMA: Schema = Schema {
+    class: "TextureBrush",
+    options_name: "TextureBrushOptions",
+    options: &[
+        MEMORY_BUDGET,
+        number(
+            "nu",
+            Some("1000"),
+            "Weight of the brushed-pixel term of eq. 1.",
+        ),
+        number(
+            "k1",
+            Some("0.5"),
+            "Weight k1 of the smoothness term of eq. 3.",
+        ),
+        number(
+            "k2",
+            Some("0.5"),
+            "Weight k2 of the smoothness term of eq. 3.",
+        ),
+        Opt {
+            key: "margin",
+            kind: Kind::Integer { min: 0, max: 256 },
+            default: Some("12"),
+            doc: "Pixels around the stroke the graph cut may use.",
+        },
+        boolean(
+            "poisson",
+            "true",
+            "Poisson paste of the reference's pixels.",
+        ),
+    ],
+    required: &[],
+    event_name: "BrushStroke",
+    event: &[
+        EventField {
+            key: "x",
+            ts: "number",
+            doc: "Left of the box the stroke changed.",
+        },
+        EventField {
+            key: "y",
+            ts: "number",
+            doc: "Top of the box the stroke changed.",
+        },
+        EventField {
+            key: "width",
+            ts: "number",
+            doc: "Width of that box.",
+        },
+        EventField {
+            key: "height",
+            ts: "number",
+            doc: "Height of that box.",
+        },
+        EventField {
+            key: "pixelsTaken",
+            ts: "number",
+            doc: "Base pixels that took the reference.",
+        },
+        EventField {
+            key: "energy",
+            ts: "number",
+            doc: "The labelling energy of eqs. 1-3.",
+        },
+        EventField {
+            key: "poissonIterations",
+            ts: "number",
+            doc: "Iterations of the Poisson solve (0 without Poisson paste).",
+        },
+    ],
+};
 
 /// Local deformation with a brush (stage 2): paint over texture elements of a reference, drag
 /// them onto the base, and the graph cut (eqs. 1-3) and Poisson paste put them in. Undoable.
@@ -270,10 +461,7 @@ impl TextureBrush {
     /// `new TextureBrush(base, { nu: 1000, k1: 0.5, k2: 0.5, margin: 12, poisson: true })`.
     #[wasm_bindgen(constructor)]
     pub fn new(base: &Exemplar, options: JsValue) -> JsResult<TextureBrush> {
-        let js = OptionsReader::new(
-            &options,
-            &["nu", "k1", "k2", "margin", "poisson", "memoryBudgetMiB"],
-        )?;
+        let js = OptionsReader::new(&options, &BRUSH_SCHEMA)?;
         let d = BrushOptions::default();
         let options = BrushOptions {
             weights: LabellingWeights {
@@ -281,12 +469,11 @@ impl TextureBrush {
                 k1: js.number("k1")?.map_or(d.weights.k1, |v| v as f32),
                 k2: js.number("k2")?.map_or(d.weights.k2, |v| v as f32),
             },
-            margin: js
-                .integer("margin", 0, 256)?
-                .map_or(d.margin, |v| v as usize),
+            margin: js.size("margin")?.unwrap_or(d.margin),
             poisson: js.boolean("poisson")?.unwrap_or(d.poisson),
             memory_budget_mib: js.memory_budget()?,
         };
+        js.finish()?;
         Ok(TextureBrush {
             design: LocalDeformation::new(base.image(), options)?,
             last: None,
@@ -317,15 +504,15 @@ impl TextureBrush {
             dx: dx as isize,
             dy: dy as isize,
         })?;
-        let event = object(&[
+        let event = BRUSH_SCHEMA.event(&[
             ("x", (r.x as u32).into()),
             ("y", (r.y as u32).into()),
             ("width", (r.width as u32).into()),
             ("height", (r.height as u32).into()),
-            ("taken", (r.taken as u32).into()),
+            ("pixelsTaken", (r.taken as u32).into()),
             ("energy", r.energy.into()),
             ("poissonIterations", (r.poisson_iterations as u32).into()),
-        ]);
+        ])?;
         self.last = Some(r);
         Ok(event)
     }
@@ -359,8 +546,8 @@ impl TextureBrush {
 
     /// The last stroke's labelling over the base (Fig. 3e): blue where the pixels took the
     /// reference, brighter where brushed, red along the seam, transparent elsewhere.
-    #[wasm_bindgen(js_name = renderLabels)]
-    pub fn render_labels(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+    #[wasm_bindgen(js_name = renderLabelsInto)]
+    pub fn render_labels_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
         let (w, h) = (self.width() as usize, self.height() as usize);
         let mut rgba = vec![0u8; w * h * 4];
         if let Some(r) = &self.last {
@@ -395,58 +582,146 @@ impl TextureBrush {
     }
 }
 
-const LAYER_KNOWN: &[&str] = &[
-    "outputWidth",
-    "outputHeight",
-    "patchSize",
-    "overlap",
-    "search",
-    "keep",
-    "placement",
-    "tolerance",
-    "seed",
-    "memoryBudgetMiB",
-];
+pub(crate) const LAYER_SCHEMA: Schema = Schema {
+    class: "LayerDesign",
+    options_name: "LayerDesignOptions",
+    options: &[
+        MEMORY_BUDGET,
+        output_size("outputWidth", 8192, Some("360"), "Output width in pixels."),
+        output_size(
+            "outputHeight",
+            8192,
+            Some("360"),
+            "Output height in pixels.",
+        ),
+        Opt {
+            key: "patchSize",
+            kind: Kind::Integer { min: 8, max: 256 },
+            default: Some("32"),
+            doc: "Side of the square patches.",
+        },
+        Opt {
+            key: "overlap",
+            kind: Kind::Integer { min: 1, max: 127 },
+            default: None,
+            doc: "Overlap between neighbouring patches. Default: a sixth of patchSize, at least 2.",
+        },
+        Opt {
+            key: "search",
+            kind: Kind::Choice(&["qtp", "exhaustive"]),
+            default: Some("'qtp'"),
+            doc: "Candidate search: the quad-tree pyramid (QTP) or every position.",
+        },
+        Opt {
+            key: "keep",
+            kind: Kind::Integer { min: 1, max: 256 },
+            default: Some("32"),
+            doc: "Candidates the QTP keeps per level.",
+        },
+        Opt {
+            key: "placement",
+            kind: Kind::Choice(&["logistic", "random", "best"]),
+            default: Some("'logistic'"),
+            doc: "How a patch is drawn from the candidates.",
+        },
+        number(
+            "tolerance",
+            Some("0.3"),
+            "Candidates within this share of the best cost are drawn from.",
+        ),
+        Opt {
+            key: "seed",
+            kind: Kind::Integer {
+                min: 0,
+                max: 0xffff_ffff,
+            },
+            default: Some("1"),
+            doc: "Seed of the random choices: the same seed, options and input give the same bytes.",
+        },
+    ],
+    required: &[],
+    event_name: "LayerDesignEvent",
+    event: &[
+        kind_field("'row' | 'done'"),
+        DONE,
+        EventField {
+            key: "row",
+            ts: "number",
+            doc: "The row of patches made, 0 for the top.",
+        },
+        EventField {
+            key: "rows",
+            ts: "number",
+            doc: "Rows of patches in the output.",
+        },
+        EventField {
+            key: "rowPatches",
+            ts: "number",
+            doc: "Patches placed in this row.",
+        },
+        EventField {
+            key: "patchesPlaced",
+            ts: "number",
+            doc: "Patches placed so far.",
+        },
+        EventField {
+            key: "ssd",
+            ts: "number",
+            doc: "Sum over this row's patches of the chosen patch's boundary-zone SSD.",
+        },
+        EventField {
+            key: "totalSsd",
+            ts: "number",
+            doc: "The same over all rows so far.",
+        },
+        EventField {
+            key: "positionsSearched",
+            ts: "number",
+            doc: "Candidate positions whose cost was computed in this row.",
+        },
+        EventField {
+            key: "pixelsCompared",
+            ts: "number",
+            doc: "Pixel comparisons those costs took.",
+        },
+        EventField {
+            key: "largestSearch",
+            ts: "number",
+            doc: "The most positions one patch's search computed (bounded by the search window of a layer larger than 512 a side).",
+        },
+    ],
+};
 
 fn read_layer_options(value: &JsValue) -> JsResult<LayerOptions> {
-    let js = OptionsReader::new(value, LAYER_KNOWN)?;
+    let js = OptionsReader::new(value, &LAYER_SCHEMA)?;
     let d = LayerOptions::default();
-    let size = |name| js.integer(name, 1, 8192).map(|v| v.map(|v| v as usize));
-    Ok(LayerOptions {
+    let search = |name: &str| match name {
+        "qtp" => Some(LayerSearch::Qtp),
+        "exhaustive" => Some(LayerSearch::Exhaustive),
+        _ => None,
+    };
+    let placement = |name: &str| match name {
+        "logistic" => Some(LayerPlacement::Logistic),
+        "random" => Some(LayerPlacement::Random),
+        "best" => Some(LayerPlacement::Best),
+        _ => None,
+    };
+    let options = LayerOptions {
         memory_budget_mib: js.memory_budget()?,
-        output_width: size("outputWidth")?.unwrap_or(d.output_width),
-        output_height: size("outputHeight")?.unwrap_or(d.output_height),
-        patch_size: js
-            .integer("patchSize", 8, 256)?
-            .map_or(d.patch_size, |v| v as usize),
-        overlap: js.integer("overlap", 1, 127)?.map(|v| v as usize),
-        search: match js.string("search")?.as_deref() {
-            None | Some("qtp") => LayerSearch::Qtp,
-            Some("exhaustive") => LayerSearch::Exhaustive,
-            Some(other) => {
-                return Err(invalid(
-                    "search",
-                    format!("must be 'qtp' or 'exhaustive', got '{other}'"),
-                ));
-            }
-        },
-        keep: js.integer("keep", 1, 256)?.map_or(d.keep, |v| v as usize),
-        placement: match js.string("placement")?.as_deref() {
-            None | Some("logistic") => LayerPlacement::Logistic,
-            Some("random") => LayerPlacement::Random,
-            Some("best") => LayerPlacement::Best,
-            Some(other) => {
-                return Err(invalid(
-                    "placement",
-                    format!("must be 'logistic', 'random' or 'best', got '{other}'"),
-                ));
-            }
-        },
+        output_width: js.size("outputWidth")?.unwrap_or(d.output_width),
+        output_height: js.size("outputHeight")?.unwrap_or(d.output_height),
+        patch_size: js.size("patchSize")?.unwrap_or(d.patch_size),
+        overlap: js.size("overlap")?,
+        search: js.choice("search", search)?.unwrap_or(LayerSearch::Qtp),
+        keep: js.size("keep")?.unwrap_or(d.keep),
+        placement: js
+            .choice("placement", placement)?
+            .unwrap_or(LayerPlacement::Logistic),
         tolerance: js.number("tolerance")?.map_or(d.tolerance, |v| v as f32),
-        seed: js
-            .integer("seed", 0, u64::from(u32::MAX))?
-            .unwrap_or(d.seed),
-    })
+        seed: js.integer("seed")?.unwrap_or(d.seed),
+    };
+    js.finish()?;
+    Ok(options)
 }
 
 /// Fast layer-based design (stage 4): add layers (designed textures, each with its own global
@@ -458,6 +733,74 @@ pub struct LayerDesign {
     layers: Vec<Layer>,
     layout: Option<Vec<u8>>,
     design: Option<Design>,
+}
+
+js_session!(LayerDesign);
+
+/// One row of patches per step.
+impl JsSession for LayerDesign {
+    fn step_event(&mut self) -> JsResult<JsValue> {
+        if self.design.is_none() {
+            if self.layers.is_empty() {
+                return Err(invalid(
+                    "layers",
+                    "add at least one layer with addLayer() first",
+                ));
+            }
+            let n = self.options.output_width * self.options.output_height;
+            let layout = self.layout.clone().unwrap_or_else(|| vec![0; n]);
+            self.design = Some(Design::new(&self.layers, &layout, self.options.clone())?);
+        }
+        let e = self.design.as_mut().expect("built above").step()?;
+        LAYER_SCHEMA.event(&[
+            ("kind", if e.done { "done" } else { "row" }.into()),
+            ("done", e.done.into()),
+            ("row", (e.row as u32).into()),
+            ("rows", (e.rows as u32).into()),
+            ("rowPatches", (e.patches as u32).into()),
+            ("patchesPlaced", (e.total_patches as u32).into()),
+            ("ssd", e.ssd.into()),
+            ("totalSsd", e.total_ssd.into()),
+            ("positionsSearched", (e.positions_searched as f64).into()),
+            ("pixelsCompared", (e.pixels_compared as f64).into()),
+            ("largestSearch", (e.largest_search as f64).into()),
+        ])
+    }
+
+    fn is_done(&self) -> bool {
+        self.design.as_ref().is_some_and(Design::is_done)
+    }
+
+    fn size(&self) -> (usize, usize) {
+        (self.options.output_width, self.options.output_height)
+    }
+
+    fn memory_bytes(&self) -> u64 {
+        let (w, h) = (self.options.output_width, self.options.output_height);
+        let dims: Vec<(usize, usize)> = self
+            .layers
+            .iter()
+            .map(|l| (l.texture.width(), l.texture.height()))
+            .collect();
+        let c = self.layers.iter().map(|l| l.texture.channels()).max();
+        crate::methods::design::memory::layers_working_set(
+            (w, h, c.unwrap_or(4)),
+            self.options.patch_size,
+            &dims,
+        )
+        .bytes()
+    }
+
+    /// The output so far (black where no patch is yet).
+    fn render(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        match &self.design {
+            Some(d) => render_into(d.image(), target),
+            None => write_rgba(
+                &vec![0; self.options.output_width * self.options.output_height * 4],
+                target,
+            ),
+        }
+    }
 }
 
 #[wasm_bindgen]
@@ -490,25 +833,6 @@ impl LayerDesign {
     }
 
     /// Adds a layer; returns its index. `deformations` as in `deformTexture`. Starts over.
-    /// The estimated peak memory of this session, in bytes: what the constructor compared with
-    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
-    #[wasm_bindgen(getter, js_name = memoryEstimate)]
-    pub fn memory_estimate(&self) -> f64 {
-        let (w, h) = (self.options.output_width, self.options.output_height);
-        let dims: Vec<(usize, usize)> = self
-            .layers
-            .iter()
-            .map(|l| (l.texture.width(), l.texture.height()))
-            .collect();
-        let c = self.layers.iter().map(|l| l.texture.channels()).max();
-        crate::methods::design::memory::layers_working_set(
-            (w, h, c.unwrap_or(4)),
-            self.options.patch_size,
-            &dims,
-        )
-        .bytes() as f64
-    }
-
     #[wasm_bindgen(js_name = addLayer)]
     pub fn add_layer(&mut self, exemplar: &Exemplar, deformations: JsValue) -> JsResult<u32> {
         if self.layers.len() == crate::methods::design::layers::MAX_LAYERS {
@@ -550,65 +874,6 @@ impl LayerDesign {
         self.layout = Some(layout.to_vec());
         self.design = None;
         Ok(())
-    }
-
-    /// Makes the next row of patches. Returns `{ kind: 'row' | 'done', done, row, rows, patches,
-    /// totalPatches, ssd, totalSsd, positionsSearched, pixelsCompared, largestSearch }`
-    /// (`largestSearch`: the most positions one patch's search computed, bounded by the search
-    /// window of a layer larger than 512 a side).
-    pub fn step(&mut self) -> JsResult<JsValue> {
-        if self.design.is_none() {
-            if self.layers.is_empty() {
-                return Err(invalid(
-                    "layers",
-                    "add at least one layer with addLayer() first",
-                ));
-            }
-            let n = self.options.output_width * self.options.output_height;
-            let layout = self.layout.clone().unwrap_or_else(|| vec![0; n]);
-            self.design = Some(Design::new(&self.layers, &layout, self.options.clone())?);
-        }
-        let e = self.design.as_mut().expect("built above").step()?;
-        Ok(object(&[
-            ("kind", if e.done { "done" } else { "row" }.into()),
-            ("done", e.done.into()),
-            ("row", (e.row as u32).into()),
-            ("rows", (e.rows as u32).into()),
-            ("patches", (e.patches as u32).into()),
-            ("totalPatches", (e.total_patches as u32).into()),
-            ("ssd", e.ssd.into()),
-            ("totalSsd", e.total_ssd.into()),
-            ("positionsSearched", (e.positions_searched as f64).into()),
-            ("pixelsCompared", (e.pixels_compared as f64).into()),
-            ("largestSearch", (e.largest_search as f64).into()),
-        ]))
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn done(&self) -> bool {
-        self.design.as_ref().is_some_and(Design::is_done)
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn width(&self) -> u32 {
-        self.options.output_width as u32
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn height(&self) -> u32 {
-        self.options.output_height as u32
-    }
-
-    /// The output so far (black where no patch is yet).
-    #[wasm_bindgen(js_name = renderInto)]
-    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
-        match &self.design {
-            Some(d) => render_into(d.image(), target),
-            None => write_rgba(
-                &vec![0; self.options.output_width * self.options.output_height * 4],
-                target,
-            ),
-        }
     }
 
     /// The output as an `Exemplar` (for the gallery, `makeTileable` or a PNG).

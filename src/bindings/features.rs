@@ -8,8 +8,11 @@ use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
 use super::exemplar::Exemplar;
+use super::optimization::output_size;
 use super::options::{OptionsReader, object};
 use super::pixels::{render_into, write_rgba};
+use super::schema::{DONE, EventField, Kind, MEMORY_BUDGET, Opt, Schema, invalid, kind_field};
+use super::session::{JsSession, js_session};
 use crate::core::{Error, from_rgba8};
 use crate::methods::design::Deformation;
 use crate::methods::features::broken::{BrokenBaseline, broken_features};
@@ -18,29 +21,46 @@ use crate::methods::features::{
     FeatureSynthesis as Synthesis, WarpKind, detect,
 };
 
-fn invalid(name: &'static str, reason: impl Into<String>) -> JsError {
-    Error::InvalidParameter {
-        name,
-        reason: reason.into(),
-    }
-    .into()
-}
+const FEATURES: Opt = Opt {
+    key: "features",
+    kind: Kind::Choice(&["ridges", "edges", "both"]),
+    default: Some("'ridges'"),
+    doc: "Which curves make the map.",
+};
+const THRESHOLD: Opt = Opt {
+    key: "threshold",
+    kind: Kind::Number,
+    default: Some("0.9"),
+    doc: "Percentile of the responses above which a pixel is a strong feature, 0.5..0.999.",
+};
+const ALPHA: Opt = Opt {
+    key: "alpha",
+    kind: Kind::Number,
+    default: Some("0.3"),
+    doc: "Weak features: at least alpha times a nearby strong response, 0..1.",
+};
+
+/// The feature detector's options (`detectFeatures`, `FeatureMap`); `FeatureSynthesis` takes
+/// the same keys among its own.
+pub(crate) const DETECT_SCHEMA: Schema = Schema {
+    class: "FeatureMap",
+    options_name: "DetectFeaturesOptions",
+    options: &[FEATURES, THRESHOLD, ALPHA],
+    required: &[],
+    event_name: "",
+    event: &[],
+};
 
 fn read_detect(js: &OptionsReader) -> JsResult<DetectOptions> {
     let d = DetectOptions::default();
+    let kind = |name: &str| match name {
+        "edges" => Some(FeatureKind::Edges),
+        "ridges" => Some(FeatureKind::Ridges),
+        "both" => Some(FeatureKind::Both),
+        _ => None,
+    };
     let options = DetectOptions {
-        kind: match js.string("features")?.as_deref() {
-            None => d.kind,
-            Some("edges") => FeatureKind::Edges,
-            Some("ridges") => FeatureKind::Ridges,
-            Some("both") => FeatureKind::Both,
-            Some(other) => {
-                return Err(invalid(
-                    "features",
-                    format!("must be 'edges', 'ridges' or 'both', got '{other}'"),
-                ));
-            }
-        },
+        kind: js.choice("features", kind)?.unwrap_or(d.kind),
         percentile: js.number("threshold")?.map_or(d.percentile, |v| v as f32),
         alpha: js.number("alpha")?.map_or(d.alpha, |v| v as f32),
     };
@@ -69,8 +89,9 @@ impl FeatureMap {
     }
 
     fn detect(exemplar: &Exemplar, options: &JsValue) -> JsResult<FeatureMap> {
-        let js = OptionsReader::new(options, &["features", "threshold", "alpha"])?;
+        let js = OptionsReader::new(options, &DETECT_SCHEMA)?;
         let options = read_detect(&js)?;
+        js.finish()?;
         let map = detect(exemplar.image(), options)?;
         Ok(FeatureMap {
             baseline: BrokenBaseline::of(&map, options),
@@ -254,28 +275,171 @@ fn feature_rgba(mask: &[bool], angle: &[f32]) -> Vec<u8> {
         .collect()
 }
 
-const KNOWN: &[&str] = &[
-    "outputWidth",
-    "outputHeight",
-    "placement",
-    "seamFeatureWeight",
-    "patchSize",
-    "overlap",
-    "featureWeight",
-    "warp",
-    "tolerance",
-    "featureCandidates",
-    "extraInputs",
-    "features",
-    "threshold",
-    "alpha",
-    "seed",
-    "featureMask",
-    "memoryBudgetMiB",
-];
+pub(crate) const SCHEMA: Schema = Schema {
+    class: "FeatureSynthesis",
+    options_name: "FeatureSynthesisOptions",
+    options: &[
+        MEMORY_BUDGET,
+        output_size("outputWidth", 8192, Some("256"), "Output width in pixels."),
+        output_size(
+            "outputHeight",
+            8192,
+            Some("256"),
+            "Output height in pixels.",
+        ),
+        Opt {
+            key: "placement",
+            kind: Kind::Choice(&["graphcut", "scan"]),
+            default: Some("'graphcut'"),
+            doc: "'graphcut': graph-cut placement of the whole exemplar, offsets chosen by colour SSD plus the feature cost over the band where the patch meets the made output, seams that also pay for cutting curves (no warp); 'scan': the paper's patches in scan order, warped.",
+        },
+        Opt {
+            key: "seamFeatureWeight",
+            kind: Kind::Number,
+            default: Some("1"),
+            doc: "Graph-cut placement: seam cost per pixel where the two patches disagree on a curve, in units of the exemplar's feature contrast, 0..100.",
+        },
+        Opt {
+            key: "patchSize",
+            kind: Kind::Integer { min: 1, max: 4096 },
+            default: None,
+            doc: "16..128, at most the exemplar's shorter side (scan placement; graph-cut placement's feature band is a quarter of it). Default: 64, or the exemplar's shorter side when smaller (the exemplar needs at least 16x16).",
+        },
+        Opt {
+            key: "overlap",
+            kind: Kind::Integer { min: 1, max: 4096 },
+            default: None,
+            doc: "Context-region width (scan), or the width of the feature-cost band (graphcut). Default: a quarter of patchSize.",
+        },
+        Opt {
+            key: "featureWeight",
+            kind: Kind::Number,
+            default: Some("0.5"),
+            doc: "Weight of the feature cost against the colour SSD, 0..1.",
+        },
+        Opt {
+            key: "warp",
+            kind: Kind::Boolean,
+            default: Some("true"),
+            doc: "Bend each patch onto the context's features (scan placement).",
+        },
+        Opt {
+            key: "tolerance",
+            kind: Kind::Number,
+            default: Some("0.1"),
+            doc: "Scan placement: candidates within (1 + tolerance) of the best are drawn at random, 0..10.",
+        },
+        Opt {
+            key: "featureCandidates",
+            kind: Kind::Integer {
+                min: 1,
+                max: 100_000,
+            },
+            default: None,
+            doc: "Best candidates by colour whose feature cost is computed. Default: 64 for graph-cut placement, 256 for scan.",
+        },
+        Opt {
+            key: "extraInputs",
+            kind: Kind::Value("Array<'rotate90' | 'rotate180' | 'rotate270' | 'mirror' | 'flip'>"),
+            default: Some("[]"),
+            doc: "Deformed copies of the exemplar as extra inputs.",
+        },
+        FEATURES,
+        THRESHOLD,
+        ALPHA,
+        Opt {
+            key: "seed",
+            kind: Kind::Integer {
+                min: 0,
+                max: 0xffff_ffff,
+            },
+            default: Some("1"),
+            doc: "Seed of the random choices: the same seed, options and input give the same bytes.",
+        },
+        Opt {
+            key: "featureMask",
+            kind: Kind::Value("Uint8Array"),
+            default: None,
+            doc: "An edited feature map, one byte per exemplar pixel, non-zero on a curve (`FeatureMap.toMask()`), so that an edited map can be sent to a worker; the tangents still come from the exemplar. Default: the detected map.",
+        },
+    ],
+    required: &[],
+    event_name: "FeatureSynthesisEvent",
+    event: &[
+        kind_field("'placed' | 'done'"),
+        DONE,
+        EventField {
+            key: "patchesPlaced",
+            ts: "number",
+            doc: "Patches placed so far, this step's included.",
+        },
+        EventField {
+            key: "patchesPlanned",
+            ts: "number",
+            doc: "Patches the output takes (with graph-cut placement, a lower bound that grows until the output is covered).",
+        },
+        EventField {
+            key: "x",
+            ts: "number",
+            doc: "Left of the patch in the output.",
+        },
+        EventField {
+            key: "y",
+            ts: "number",
+            doc: "Top of the patch in the output.",
+        },
+        EventField {
+            key: "input",
+            ts: "number",
+            doc: "The input the patch came from (0: the exemplar, then `extraInputs` in order).",
+        },
+        EventField {
+            key: "sourceX",
+            ts: "number",
+            doc: "Left of the patch in its input.",
+        },
+        EventField {
+            key: "sourceY",
+            ts: "number",
+            doc: "Top of the patch in its input.",
+        },
+        EventField {
+            key: "featureCost",
+            ts: "number",
+            doc: "The feature cost of eq. 2 of the chosen candidate.",
+        },
+        EventField {
+            key: "colourCost",
+            ts: "number",
+            doc: "Mean squared colour difference of the chosen candidate.",
+        },
+        EventField {
+            key: "contextFeatures",
+            ts: "number",
+            doc: "Feature pixels in the patch's context region.",
+        },
+        EventField {
+            key: "correspondences",
+            ts: "number",
+            doc: "Feature correspondences the warp used.",
+        },
+        EventField {
+            key: "warp",
+            ts: "'none' | 'spline' | 'shepard' | 'skipped'",
+            doc: "The warp applied to the patch.",
+        },
+        EventField {
+            key: "colourOnly",
+            ts: "boolean",
+            doc: "True when the choice used colour only (no oriented features to match).",
+        },
+    ],
+};
 
-fn read_options(value: &JsValue) -> JsResult<FeatureOptions> {
-    let js = OptionsReader::new(value, KNOWN)?;
+/// The options; `featureMask` is returned raw, for the constructor to check against the
+/// exemplar.
+fn read_options(value: &JsValue) -> JsResult<(FeatureOptions, Option<JsValue>)> {
+    let js = OptionsReader::new(value, &SCHEMA)?;
     let d = FeatureOptions::default();
     let mut extra = Vec::new();
     if let Some(v) = js.value("extraInputs")? {
@@ -301,65 +465,95 @@ fn read_options(value: &JsValue) -> JsResult<FeatureOptions> {
             });
         }
     }
-    let placement = match js.string("placement")? {
-        None => d.placement,
-        Some(name) => FeaturePlacement::from_name(&name).ok_or_else(|| {
-            invalid(
-                "placement",
-                format!("must be 'graphcut' or 'scan', got '{name}'"),
-            )
-        })?,
-    };
-    Ok(FeatureOptions {
+    let options = FeatureOptions {
         memory_budget_mib: js.memory_budget()?,
-        placement,
+        placement: js
+            .choice("placement", FeaturePlacement::from_name)?
+            .unwrap_or(d.placement),
         seam_feature_weight: js
             .number("seamFeatureWeight")?
             .map_or(d.seam_feature_weight, |v| v as f32),
-        output_width: js
-            .integer("outputWidth", 1, 8192)?
-            .map_or(d.output_width, |v| v as usize),
-        output_height: js
-            .integer("outputHeight", 1, 8192)?
-            .map_or(d.output_height, |v| v as usize),
-        patch_size: js.integer("patchSize", 1, 4096)?.map(|v| v as usize),
-        overlap: js.integer("overlap", 1, 4096)?.map(|v| v as usize),
+        output_width: js.size("outputWidth")?.unwrap_or(d.output_width),
+        output_height: js.size("outputHeight")?.unwrap_or(d.output_height),
+        patch_size: js.size("patchSize")?,
+        overlap: js.size("overlap")?,
         feature_weight: js
             .number("featureWeight")?
             .map_or(d.feature_weight, |v| v as f32),
         warp: js.boolean("warp")?.unwrap_or(d.warp),
         tolerance: js.number("tolerance")?.map_or(d.tolerance, |v| v as f32),
-        feature_candidates: js
-            .integer("featureCandidates", 1, 100_000)?
-            .map(|v| v as usize),
+        feature_candidates: js.size("featureCandidates")?,
         extra_inputs: extra,
         detect: read_detect(&js)?,
-        seed: js
-            .integer("seed", 0, u64::from(u32::MAX))?
-            .unwrap_or(d.seed),
-    })
+        seed: js.integer("seed")?.unwrap_or(d.seed),
+    };
+    let mask = js.value("featureMask")?;
+    js.finish()?;
+    Ok((options, mask))
 }
 
-/// Feature-guided synthesis, one patch per step: `new FeatureSynthesis(exemplar, { outputWidth:
-/// 256, outputHeight: 256, patchSize: 64, featureWeight: 0.5, warp: true, tolerance: 0.1,
-/// featureCandidates: 64 (256 for placement: 'scan'), extraInputs: [], features: 'ridges', threshold: 0.9, alpha: 0.3,
-/// seed: 1 })`.
+/// Feature-guided synthesis (Wu & Yu 2004), one patch per step.
 #[wasm_bindgen]
 pub struct FeatureSynthesis {
     synthesis: Synthesis,
 }
 
+js_session!(FeatureSynthesis);
+
+/// One patch per step.
+impl JsSession for FeatureSynthesis {
+    fn step_event(&mut self) -> JsResult<JsValue> {
+        let e = self.synthesis.step()?;
+        let warp = match e.warp {
+            WarpKind::None => "none",
+            WarpKind::Spline => "spline",
+            WarpKind::Shepard(_) => "shepard",
+            WarpKind::Skipped => "skipped",
+        };
+        SCHEMA.event(&[
+            ("kind", if e.done { "done" } else { "placed" }.into()),
+            ("done", e.done.into()),
+            ("patchesPlaced", (e.patch as u32 + 1).into()),
+            ("patchesPlanned", (e.patches as u32).into()),
+            ("x", (e.x as u32).into()),
+            ("y", (e.y as u32).into()),
+            ("input", (e.input as u32).into()),
+            ("sourceX", (e.source_x as u32).into()),
+            ("sourceY", (e.source_y as u32).into()),
+            ("featureCost", e.feature_cost.into()),
+            ("colourCost", e.colour_cost.into()),
+            ("contextFeatures", (e.context_features as u32).into()),
+            ("correspondences", (e.correspondences as u32).into()),
+            ("warp", warp.into()),
+            ("colourOnly", e.colour_only.into()),
+        ])
+    }
+
+    fn is_done(&self) -> bool {
+        self.synthesis.is_done()
+    }
+
+    fn size(&self) -> (usize, usize) {
+        let o = self.synthesis.options();
+        (o.output_width, o.output_height)
+    }
+
+    fn memory_bytes(&self) -> u64 {
+        self.synthesis.working_set().bytes()
+    }
+
+    fn render(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        render_into(self.synthesis.image(), target)
+    }
+}
+
 #[wasm_bindgen]
 impl FeatureSynthesis {
+    /// `new FeatureSynthesis(exemplar, options)`: see [`SCHEMA`] (every key optional).
     #[wasm_bindgen(constructor)]
-    ///
-    /// `featureMask` (a Uint8Array, one byte per exemplar pixel, non-zero on a curve, as
-    /// `FeatureMap.toMask()` gives it) replaces the detected curves, so that an edited map can be
-    /// sent to a worker; the tangents still come from the exemplar.
     pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<FeatureSynthesis> {
-        let parsed = read_options(&options)?;
-        let js = OptionsReader::new(&options, KNOWN)?;
-        let map = match js.value("featureMask")? {
+        let (parsed, mask) = read_options(&options)?;
+        let map = match mask {
             None => None,
             Some(v) => {
                 let Some(bytes) = v.dyn_ref::<js_sys::Uint8Array>() else {
@@ -401,39 +595,9 @@ impl FeatureSynthesis {
             synthesis: Synthesis::new(
                 exemplar.image(),
                 Some(map.map.clone()),
-                read_options(&options)?,
+                read_options(&options)?.0,
             )?,
         })
-    }
-
-    /// Places the next patch: `{ kind: 'patch' | 'done', done, patch, patches, x, y, input,
-    /// sourceX, sourceY, featureCost, colourCost, contextFeatures, correspondences, warp: 'none' |
-    /// 'spline' | 'shepard' | 'skipped', colourOnly }`.
-    pub fn step(&mut self) -> JsResult<JsValue> {
-        let e = self.synthesis.step()?;
-        let warp = match e.warp {
-            WarpKind::None => "none",
-            WarpKind::Spline => "spline",
-            WarpKind::Shepard(_) => "shepard",
-            WarpKind::Skipped => "skipped",
-        };
-        Ok(object(&[
-            ("kind", if e.done { "done" } else { "patch" }.into()),
-            ("done", e.done.into()),
-            ("patch", (e.patch as u32).into()),
-            ("patches", (e.patches as u32).into()),
-            ("x", (e.x as u32).into()),
-            ("y", (e.y as u32).into()),
-            ("input", (e.input as u32).into()),
-            ("sourceX", (e.source_x as u32).into()),
-            ("sourceY", (e.source_y as u32).into()),
-            ("featureCost", e.feature_cost.into()),
-            ("colourCost", e.colour_cost.into()),
-            ("contextFeatures", (e.context_features as u32).into()),
-            ("correspondences", (e.correspondences as u32).into()),
-            ("warp", warp.into()),
-            ("colourOnly", e.colour_only.into()),
-        ]))
     }
 
     /// The broken-feature count on the synthesised feature map: its curve ends per 1000 curve
@@ -444,34 +608,6 @@ impl FeatureSynthesis {
         self.synthesis.carried_broken()
     }
 
-    /// The estimated peak memory of this session, in bytes: what the constructor compared with
-    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
-    #[wasm_bindgen(getter, js_name = memoryEstimate)]
-    pub fn memory_estimate(&self) -> f64 {
-        self.synthesis.working_set().bytes() as f64
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn done(&self) -> bool {
-        self.synthesis.is_done()
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn width(&self) -> u32 {
-        self.synthesis.options().output_width as u32
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn height(&self) -> u32 {
-        self.synthesis.options().output_height as u32
-    }
-
-    #[wasm_bindgen(js_name = renderInto)]
-    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
-        render_into(self.synthesis.image(), target)
-    }
-
-    /// The synthesised feature map, coloured by orientation (output size).
     /// Turns on the placement anatomy of graph-cut placement (see `GraphcutTextures.setAnatomy`;
     /// the cost surface is the colour cost of eq. 2, which the feature cost then re-ranks among
     /// the best candidates). A scan-placement synthesis has no graph cut: an error names it.
@@ -507,8 +643,9 @@ impl FeatureSynthesis {
             .map_or(JsValue::NULL, super::graphcut::graph_object)
     }
 
-    #[wasm_bindgen(js_name = renderFeatures)]
-    pub fn render_features(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+    /// The synthesised feature map, coloured by orientation (output size).
+    #[wasm_bindgen(js_name = renderFeaturesInto)]
+    pub fn render_features_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
         write_rgba(
             &feature_rgba(
                 self.synthesis.feature_mask(),
@@ -552,11 +689,9 @@ pub fn measure_broken_features(
     height: u32,
     options: JsValue,
 ) -> JsResult<f64> {
-    let js = OptionsReader::new(&options, &["features", "threshold", "alpha"])?;
+    let js = OptionsReader::new(&options, &DETECT_SCHEMA)?;
+    let detect = read_detect(&js)?;
+    js.finish()?;
     let output = from_rgba8(width as usize, height as usize, rgba)?;
-    Ok(broken_features(
-        exemplar.image(),
-        &output,
-        read_detect(&js)?,
-    )?)
+    Ok(broken_features(exemplar.image(), &output, detect)?)
 }

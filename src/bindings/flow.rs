@@ -7,8 +7,13 @@ use wasm_bindgen::{JsCast, prelude::*};
 
 use super::error::JsResult;
 use super::exemplar::Exemplar;
-use super::options::{OptionsReader, object};
+use super::optimization::output_size;
+use super::options::OptionsReader;
 use super::pixels::{check_target, render_into, write_rgba};
+use super::schema::{
+    DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, invalid, kind_field,
+};
+use super::session::{JsSession, js_session};
 use crate::core::Error;
 use crate::core::error::check_size;
 use crate::methods::flow::{
@@ -17,47 +22,215 @@ use crate::methods::flow::{
 };
 use crate::solvers::nn::Search;
 
-const KNOWN: &[&str] = &[
-    "outputWidth",
-    "outputHeight",
-    "frames",
-    "lambda",
-    "frameSizes",
-    "frameIterations",
-    "seed",
-    "search",
-    "subPixel",
-    "r",
-    "tileable",
-    "flow",
-    "histogramMatching",
-    "memoryBudgetMiB",
-];
+pub(crate) const SCHEMA: Schema = Schema {
+    class: "FlowAnimation",
+    options_name: "FlowAnimationOptions",
+    options: &[
+        MEMORY_BUDGET,
+        output_size(
+            "outputWidth",
+            1 << 20,
+            Some("128"),
+            "Frame width in pixels.",
+        ),
+        output_size(
+            "outputHeight",
+            1 << 20,
+            Some("128"),
+            "Frame height in pixels.",
+        ),
+        Opt {
+            key: "frames",
+            kind: Kind::Integer {
+                min: 0,
+                max: 1 << 32,
+            },
+            default: Some("60"),
+            doc: "Frames to make.",
+        },
+        Opt {
+            key: "lambda",
+            kind: Kind::Number,
+            default: Some("0.2"),
+            doc: "Weight of the flow (soft-constraint) energy, eq. 3.",
+        },
+        Opt {
+            key: "frameSizes",
+            kind: Kind::Integers {
+                min: 0,
+                max: 1 << 20,
+            },
+            default: Some("[32, 16, 8]"),
+            doc: "Neighbourhood sizes of the frames after the first; sizes that do not fit the exemplar (4 widths) or the frame are skipped; where none fits, the smallest at most half the exemplar.",
+        },
+        Opt {
+            key: "frameIterations",
+            kind: Kind::Integer {
+                min: 0,
+                max: 1 << 20,
+            },
+            default: Some("3"),
+            doc: "Iterations per size per frame; the last one's M-step only measures its matches (it reports 0 changed).",
+        },
+        SEED,
+        Opt {
+            key: "search",
+            kind: Kind::Choice(&["patchmatch", "kmeans-tree", "exact"]),
+            default: Some("'patchmatch'"),
+            doc: "Nearest-neighbour search.",
+        },
+        Opt {
+            key: "subPixel",
+            kind: Kind::Boolean,
+            default: Some("false"),
+            doc: "Matches at half-pixel precision: flows slower than half a pixel per frame move the texture (with whole-pixel matches they do not), for slightly softer frames.",
+        },
+        Opt {
+            key: "r",
+            kind: Kind::Number,
+            default: Some("0.8"),
+            doc: "Robust IRLS exponent, as for TextureOptimization.",
+        },
+        Opt {
+            key: "tileable",
+            kind: Kind::Boolean,
+            default: Some("false"),
+            doc: "Make the frames tile seamlessly.",
+        },
+        Opt {
+            key: "flow",
+            kind: Kind::Value("Flow"),
+            default: None,
+            doc: "The flow: a generator `{ type, ... }`, a sum `{ components: [...] }`, one Float32Array of (vx, vy) per pixel (a stationary flow) or an array of them (f_1, f_2, ..., cycled). Default: a vortex of strength 2.",
+        },
+        Opt {
+            key: "histogramMatching",
+            kind: Kind::Number,
+            default: Some("1"),
+            doc: "How far each frame's colour histogram is matched to the exemplar's (0..1), as for TextureOptimization.",
+        },
+    ],
+    required: &[],
+    event_name: "FlowAnimationEvent",
+    event: &[
+        kind_field("'part' | 'iteration' | 'frame' | 'done'"),
+        DONE,
+        EventField {
+            key: "frameFinished",
+            ts: "boolean",
+            doc: "A frame was finished by this step: `renderInto` gives it.",
+        },
+        EventField {
+            key: "frame",
+            ts: "number",
+            doc: "The frame worked on, 0 for the first.",
+        },
+        EventField {
+            key: "iteration",
+            ts: "number",
+            doc: "Iteration within the frame.",
+        },
+        EventField {
+            key: "neighbourhoodSize",
+            ts: "number",
+            doc: "Neighbourhood size of the iteration.",
+        },
+        EventField {
+            key: "textureEnergy",
+            ts: "number",
+            doc: "Texture energy of the frame.",
+        },
+        EventField {
+            key: "flowEnergy",
+            ts: "number",
+            doc: "Flow energy of eq. 3 (0 in the first frame).",
+        },
+        EventField {
+            key: "changed",
+            ts: "number",
+            doc: "Matches that changed in this iteration.",
+        },
+        EventField {
+            key: "totalIterations",
+            ts: "number",
+            doc: "Iterations so far over all frames.",
+        },
+        EventField {
+            key: "phase",
+            ts: "'start' | 'first-match' | 'e-step' | 'm-step'",
+            doc: "The half of the iteration a 'part' step stopped in (a whole iteration: 'm-step'; 'e-step' for a later frame's last iteration at a size, whose M-step only measures).",
+        },
+        EventField {
+            key: "progress",
+            ts: "number",
+            doc: "Share of the iteration done, 0 to 1 (1 for a whole iteration).",
+        },
+    ],
+};
 
-const COMPONENT_KEYS: &[&str] = &[
-    "type", "strength", "centerX", "centerY", "angle", "period", "turn",
-];
+/// One flow generator of the `flow` option.
+pub(crate) const COMPONENT_SCHEMA: Schema = Schema {
+    class: "flow",
+    options_name: "FlowComponent",
+    options: &[
+        Opt {
+            key: "type",
+            kind: Kind::Choice(&["sink", "source", "vortex", "shear", "translation"]),
+            default: None,
+            doc: "The generator.",
+        },
+        Opt {
+            key: "strength",
+            kind: Kind::Number,
+            default: Some("1"),
+            doc: "Pixels per frame at half the frame's shorter side (the animation's default vortex has 2).",
+        },
+        Opt {
+            key: "centreX",
+            kind: Kind::Number,
+            default: Some("0.5"),
+            doc: "Centre, 0..1 of the width.",
+        },
+        Opt {
+            key: "centreY",
+            kind: Kind::Number,
+            default: Some("0.5"),
+            doc: "Centre, 0..1 of the height.",
+        },
+        Opt {
+            key: "angle",
+            kind: Kind::Number,
+            default: Some("0"),
+            doc: "Degrees (translation and shear).",
+        },
+        Opt {
+            key: "period",
+            kind: Kind::Number,
+            default: Some("0"),
+            doc: "Frames; the strength oscillates with this period (0: constant).",
+        },
+        Opt {
+            key: "turn",
+            kind: Kind::Number,
+            default: Some("0"),
+            doc: "Degrees per frame the angle turns.",
+        },
+    ],
+    required: &["type"],
+    event_name: "",
+    event: &[],
+};
 
-fn invalid(name: &'static str, reason: impl Into<String>) -> JsError {
-    Error::InvalidParameter {
-        name,
-        reason: reason.into(),
-    }
-    .into()
-}
-
-/// `{ type, strength, centerX, centerY, angle, period, turn }`; only `type` is required.
+/// `{ type, strength, centreX, centreY, angle, period, turn }`; only `type` is required.
 fn read_component(value: &JsValue) -> JsResult<Component> {
-    let js = OptionsReader::new(value, COMPONENT_KEYS)?;
+    let js = OptionsReader::new(value, &COMPONENT_SCHEMA)?;
     let names = FlowKind::ALL.map(FlowKind::name).join("', '");
-    let kind = match js.string("type")? {
-        Some(name) => FlowKind::from_name(&name).ok_or_else(|| {
-            invalid(
-                "flow.type",
-                format!("must be one of '{names}', got '{name}'"),
-            )
-        })?,
-        None => {
+    let kind = match js.choice("type", FlowKind::from_name) {
+        Ok(Some(kind)) => kind,
+        Err(_) => {
+            return Err(invalid("flow.type", format!("must be one of '{names}'")));
+        }
+        Ok(None) => {
             return Err(invalid(
                 "flow.type",
                 format!("is required: one of '{names}'"),
@@ -68,14 +241,16 @@ fn read_component(value: &JsValue) -> JsResult<Component> {
     let num = |name: &'static str, default: f32| -> JsResult<f32> {
         Ok(js.number(name)?.map_or(default, |v| v as f32))
     };
-    Ok(Component {
+    let component = Component {
         kind,
         strength: num("strength", d.strength)?,
-        center: (num("centerX", d.center.0)?, num("centerY", d.center.1)?),
+        center: (num("centreX", d.center.0)?, num("centreY", d.center.1)?),
         angle: num("angle", d.angle)?,
         period: num("period", d.period)?,
         turn: num("turn", d.turn)?,
-    })
+    };
+    js.finish()?;
+    Ok(component)
 }
 
 /// A generator (`{ type, ... }` or `{ components: [{ type, ... }, ...] }`).
@@ -135,42 +310,23 @@ fn read_flow(value: Option<JsValue>, width: usize, height: usize) -> JsResult<Fl
 
 /// Reads the options object; absent keys keep the defaults of [`FlowOptions`].
 fn read_options(value: &JsValue) -> JsResult<(FlowOptions, FlowSource)> {
-    let js = OptionsReader::new(value, KNOWN)?;
+    let js = OptionsReader::new(value, &SCHEMA)?;
     let d = FlowOptions::default();
-    let search = match js.string("search")? {
-        None => d.search,
-        Some(name) => Search::from_name(&name).ok_or_else(|| {
-            invalid(
-                "search",
-                format!("must be 'patchmatch', 'kmeans-tree' or 'exact', got '{name}'"),
-            )
-        })?,
-    };
     let options = FlowOptions {
         memory_budget_mib: js.memory_budget()?,
-        output_width: js
-            .integer("outputWidth", 1, 1 << 20)?
-            .map_or(d.output_width, |v| v as usize),
-        output_height: js
-            .integer("outputHeight", 1, 1 << 20)?
-            .map_or(d.output_height, |v| v as usize),
-        frames: js
-            .integer("frames", 0, 1 << 32)?
-            .map_or(d.frames, |v| v as usize),
+        output_width: js.size("outputWidth")?.unwrap_or(d.output_width),
+        output_height: js.size("outputHeight")?.unwrap_or(d.output_height),
+        frames: js.size("frames")?.unwrap_or(d.frames),
         lambda: js.number("lambda")?.map_or(d.lambda, |v| v as f32),
         histogram_matching: js
             .number("histogramMatching")?
             .map_or(d.histogram_matching, |v| v as f32),
-        frame_sizes: js
-            .integers("frameSizes", 0, 1 << 20)?
-            .map_or(d.frame_sizes, |v| {
-                v.into_iter().map(|s| s as usize).collect()
-            }),
-        frame_iterations: js
-            .integer("frameIterations", 0, 1 << 20)?
-            .map_or(d.frame_iterations, |v| v as usize),
-        seed: js.integer("seed", 0, (1 << 53) - 1)?.unwrap_or(d.seed),
-        search,
+        frame_sizes: js.integers("frameSizes")?.map_or(d.frame_sizes, |v| {
+            v.into_iter().map(|s| s as usize).collect()
+        }),
+        frame_iterations: js.size("frameIterations")?.unwrap_or(d.frame_iterations),
+        seed: js.integer("seed")?.unwrap_or(d.seed),
+        search: js.choice("search", Search::from_name)?.unwrap_or(d.search),
         r: js.number("r")?.map_or(d.r, |v| v as f32),
         tileable: js.boolean("tileable")?.unwrap_or(d.tileable),
         sub_pixel: js.boolean("subPixel")?.unwrap_or(d.sub_pixel),
@@ -180,17 +336,18 @@ fn read_options(value: &JsValue) -> JsResult<(FlowOptions, FlowSource)> {
         options.output_width,
         options.output_height,
     )?;
+    js.finish()?;
     Ok((options, flow))
 }
 
-fn event_object(e: &FlowEvent) -> JsValue {
+fn event_object(e: &FlowEvent) -> JsResult<JsValue> {
     let kind = match e.kind {
         FlowEventKind::Part => "part",
         FlowEventKind::Iteration => "iteration",
         FlowEventKind::Frame => "frame",
         FlowEventKind::Done => "done",
     };
-    object(&[
+    SCHEMA.event(&[
         ("kind", kind.into()),
         ("done", (e.kind == FlowEventKind::Done).into()),
         (
@@ -232,56 +389,45 @@ pub struct FlowAnimation {
     session: FlowSession,
 }
 
+js_session!(FlowAnimation);
+
+/// One EM iteration per step; frames larger than 256x512 split each iteration over steps of
+/// about 60 ms (kind 'part'), and setting up a frame is a step or more of its own; where they
+/// split changes nothing. After a 'frame' (or 'done') event, `renderInto` gives that frame.
+impl JsSession for FlowAnimation {
+    fn step_event(&mut self) -> JsResult<JsValue> {
+        event_object(&self.session.step()?)
+    }
+
+    fn is_done(&self) -> bool {
+        self.session.is_done()
+    }
+
+    fn size(&self) -> (usize, usize) {
+        let o = self.session.options();
+        (o.output_width, o.output_height)
+    }
+
+    fn memory_bytes(&self) -> u64 {
+        self.session.working_set().bytes()
+    }
+
+    /// The frame being made (or the last one finished).
+    fn render(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        render_into(&self.session.frame_image()?, target)
+    }
+}
+
 #[wasm_bindgen]
 impl FlowAnimation {
-    /// Options (all optional): `outputWidth`, `outputHeight` (128), `frames` (60), `lambda`
-    /// (0.2), `frameSizes` ([32, 16, 8]; sizes wider than the exemplar or the frame are
-    /// skipped), `frameIterations` (3), `seed` (1), `search`, `r` (0.8),
-    /// `tileable` (false), and `flow`: a generator `{ type: 'sink' | 'source' | 'vortex' | 'shear'
-    /// | 'translation', strength (px/frame), centerX, centerY (0..1), angle (deg), period
-    /// (frames), turn (deg/frame) }`, a combination `{ components: [...] }`, one `Float32Array`
-    /// of `(vx, vy)` per pixel (a stationary flow) or an array of them (f_1, f_2, ..., cycled).
-    /// Default flow: a vortex of strength 2. Unknown keys and impossible values throw.
+    /// Options: see [`SCHEMA`] (every key optional), the flow's generators [`COMPONENT_SCHEMA`].
+    /// Unknown keys and impossible values throw.
     #[wasm_bindgen(constructor)]
     pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<FlowAnimation> {
         let (options, flow) = read_options(&options)?;
         Ok(FlowAnimation {
             session: FlowSession::new(exemplar.image(), flow, options)?,
         })
-    }
-
-    /// Runs one EM iteration. Returns `{ kind: 'part' | 'iteration' | 'frame' | 'done', done,
-    /// frameFinished, frame, iteration, neighbourhoodSize, textureEnergy, flowEnergy, changed,
-    /// totalIterations, phase, progress }`; after a `frame` (or `done`) event, `renderInto`
-    /// gives that frame. Frames larger than 256x512 split each iteration over steps of about
-    /// 60 ms (kind 'part', with the `phase` it stopped in and the `progress` of the iteration,
-    /// 0 to 1), and setting up a frame is a step or more of its own; where they split changes
-    /// nothing. A whole iteration reports phase 'm-step', or 'e-step' for a frame's last
-    /// iteration at a neighbourhood size (its M-step only measures the kept matches).
-    pub fn step(&mut self) -> JsResult<JsValue> {
-        Ok(event_object(&self.session.step()?))
-    }
-
-    /// The estimated peak memory of this session, in bytes: what the constructor compared with
-    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
-    #[wasm_bindgen(getter, js_name = memoryEstimate)]
-    pub fn memory_estimate(&self) -> f64 {
-        self.session.working_set().bytes() as f64
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn done(&self) -> bool {
-        self.session.is_done()
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn width(&self) -> u32 {
-        self.session.options().output_width as u32
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn height(&self) -> u32 {
-        self.session.options().output_height as u32
     }
 
     /// Frames finished so far.
@@ -294,12 +440,6 @@ impl FlowAnimation {
     #[wasm_bindgen(getter)]
     pub fn frames(&self) -> u32 {
         self.session.options().frames as u32
-    }
-
-    /// Writes the frame being made (or the last one finished) as RGBA8 into `target`.
-    #[wasm_bindgen(js_name = renderInto)]
-    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
-        render_into(&self.session.frame_image()?, target)
     }
 
     /// Writes the naive baseline (the first frame warped along the flow, without synthesis) at
@@ -365,7 +505,8 @@ impl FlowAnimation {
     pub fn render_warped_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
         // The target first, as every renderer checks it: a bad buffer is named whatever the frame.
         check_target(target)?;
-        let expected = (self.width() * self.height()) as usize * 4;
+        let (w, h) = JsSession::size(self);
+        let expected = w * h * 4;
         if target.length() as usize != expected {
             return Err(Error::LengthMismatch {
                 what: "target pixel array",

@@ -8,8 +8,11 @@ use wasm_bindgen::prelude::*;
 use super::error::JsResult;
 use super::exemplar::Exemplar;
 use super::features::FeatureMap;
+use super::optimization::output_size;
 use super::options::{OptionsReader, object};
 use super::pixels::{render_into, write_rgba};
+use super::schema::{DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field};
+use super::session::{JsSession, js_session};
 use crate::core::Error;
 use crate::methods::features::broken::carried_broken;
 use crate::methods::features::carried::carried_mask;
@@ -18,41 +21,148 @@ use crate::methods::graphcut::placement::Region;
 use crate::methods::graphcut::teaching::{label_map, seam_heat_map, seam_overlay};
 use crate::methods::graphcut::{Blend, Event, Options, Placement, Session, Transforms};
 
-const KNOWN: &[&str] = &[
-    "outputWidth",
-    "outputHeight",
-    "seed",
-    "placement",
-    "k",
-    "errorRegion",
-    "refinementPatches",
-    "gradientCost",
-    "blend",
-    "rotate",
-    "mirror",
-    "scales",
-    "perspective",
-    "tileable",
-    "memoryBudgetMiB",
-];
+pub(crate) const SCHEMA: Schema = Schema {
+    class: "GraphcutTextures",
+    options_name: "GraphcutTexturesOptions",
+    options: &[
+        MEMORY_BUDGET,
+        output_size(
+            "outputWidth",
+            1 << 20,
+            Some("256"),
+            "Output width in pixels.",
+        ),
+        output_size(
+            "outputHeight",
+            1 << 20,
+            Some("256"),
+            "Output height in pixels.",
+        ),
+        SEED,
+        Opt {
+            key: "placement",
+            kind: Kind::Choice(&["random", "entire-patch", "sub-patch"]),
+            default: Some("'random'"),
+            doc: "Patch placement (section 3.2).",
+        },
+        Opt {
+            key: "k",
+            kind: Kind::Number,
+            default: Some("0.01"),
+            doc: "Offsets are drawn with probability exp(-C / (k sigma^2)).",
+        },
+        Opt {
+            key: "errorRegion",
+            kind: Kind::Integer {
+                min: 0,
+                max: 1 << 20,
+            },
+            default: Some("0"),
+            doc: "Side of the error region in pixels; 0 is a third of the exemplar's side.",
+        },
+        Opt {
+            key: "refinementPatches",
+            kind: Kind::Integer {
+                min: 0,
+                max: 1 << 20,
+            },
+            default: Some("24"),
+            doc: "Patches placed after the output is covered.",
+        },
+        Opt {
+            key: "gradientCost",
+            kind: Kind::Boolean,
+            default: Some("false"),
+            doc: "Seam cost M' of eq. 5 (favours edges) instead of M of eq. 1.",
+        },
+        Opt {
+            key: "blend",
+            kind: Kind::Choice(&["none", "feather", "spline"]),
+            default: Some("'none'"),
+            doc: "Blending across seams.",
+        },
+        Opt {
+            key: "rotate",
+            kind: Kind::Boolean,
+            default: Some("false"),
+            doc: "Also take patches from the exemplar rotated by 90, 180, 270 degrees.",
+        },
+        Opt {
+            key: "mirror",
+            kind: Kind::Boolean,
+            default: Some("false"),
+            doc: "Also take patches from the mirrored exemplar.",
+        },
+        Opt {
+            key: "scales",
+            kind: Kind::Numbers,
+            default: Some("[]"),
+            doc: "Also take patches from the exemplar scaled by these factors (at most 4).",
+        },
+        Opt {
+            key: "perspective",
+            kind: Kind::Boolean,
+            default: Some("false"),
+            doc: "With scales: smaller scales towards the top.",
+        },
+        Opt {
+            key: "tileable",
+            kind: Kind::Boolean,
+            default: Some("false"),
+            doc: "Make the output tile seamlessly.",
+        },
+    ],
+    required: &[],
+    event_name: "GraphcutTexturesEvent",
+    event: &[
+        kind_field("'placed' | 'done'"),
+        DONE,
+        EventField {
+            key: "patch",
+            ts: "{ source: number; offsetX: number; offsetY: number; windowX: number; windowY: number } | null",
+            doc: "The patch placed: its source (an index into `sources()`), its offset in the output, and the top-left corner in the source of the window it copies ((0, 0) unless the exemplar is larger than 512 a side); null when no unused offset was left.",
+        },
+        EventField {
+            key: "rect",
+            ts: "Rect",
+            doc: "The patch's box in the output.",
+        },
+        EventField {
+            key: "region",
+            ts: "Rect",
+            doc: "The error region the placement aimed at.",
+        },
+        EventField {
+            key: "pixelsTaken",
+            ts: "number",
+            doc: "Output pixels the new patch took.",
+        },
+        EventField {
+            key: "cutCost",
+            ts: "number",
+            doc: "Cost of this placement's min cut.",
+        },
+        EventField {
+            key: "covered",
+            ts: "boolean",
+            doc: "Whether every output pixel has been covered.",
+        },
+        EventField {
+            key: "totalSeamCost",
+            ts: "number",
+            doc: "Cost of all seams in the output.",
+        },
+        EventField {
+            key: "patchesPlaced",
+            ts: "number",
+            doc: "Patches placed so far.",
+        },
+    ],
+};
 
 fn read_options(value: &JsValue) -> JsResult<Options> {
-    let js = OptionsReader::new(value, KNOWN)?;
+    let js = OptionsReader::new(value, &SCHEMA)?;
     let d = Options::default();
-    let placement = match js.string("placement")? {
-        None => d.placement,
-        Some(name) => Placement::from_name(&name).ok_or_else(|| Error::InvalidParameter {
-            name: "placement",
-            reason: format!("must be 'random', 'entire-patch' or 'sub-patch', got '{name}'"),
-        })?,
-    };
-    let blend = match js.string("blend")? {
-        None => d.blend,
-        Some(name) => Blend::from_name(&name).ok_or_else(|| Error::InvalidParameter {
-            name: "blend",
-            reason: format!("must be 'none', 'feather' or 'spline', got '{name}'"),
-        })?,
-    };
     let mut scales = [None; 4];
     if let Some(list) = js.numbers("scales")? {
         if list.len() > 4 {
@@ -66,25 +176,21 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
             *slot = Some(s as f32);
         }
     }
-    Ok(Options {
+    let options = Options {
         memory_budget_mib: js.memory_budget()?,
-        output_width: js
-            .integer("outputWidth", 1, 1 << 20)?
-            .map_or(d.output_width, |v| v as usize),
-        output_height: js
-            .integer("outputHeight", 1, 1 << 20)?
-            .map_or(d.output_height, |v| v as usize),
-        seed: js.integer("seed", 0, (1 << 53) - 1)?.unwrap_or(d.seed),
-        placement,
+        output_width: js.size("outputWidth")?.unwrap_or(d.output_width),
+        output_height: js.size("outputHeight")?.unwrap_or(d.output_height),
+        seed: js.integer("seed")?.unwrap_or(d.seed),
+        placement: js
+            .choice("placement", Placement::from_name)?
+            .unwrap_or(d.placement),
         k: js.number("k")?.map_or(d.k, |v| v as f32),
-        error_region: js
-            .integer("errorRegion", 0, 1 << 20)?
-            .map_or(d.error_region, |v| v as usize),
+        error_region: js.size("errorRegion")?.unwrap_or(d.error_region),
         refinement_patches: js
-            .integer("refinementPatches", 0, 1 << 20)?
-            .map_or(d.refinement_patches, |v| v as usize),
+            .size("refinementPatches")?
+            .unwrap_or(d.refinement_patches),
         gradient_cost: js.boolean("gradientCost")?.unwrap_or(d.gradient_cost),
-        blend,
+        blend: js.choice("blend", Blend::from_name)?.unwrap_or(d.blend),
         transforms: Transforms {
             rotate: js.boolean("rotate")?.unwrap_or(false),
             mirror: js.boolean("mirror")?.unwrap_or(false),
@@ -92,7 +198,9 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
             perspective: js.boolean("perspective")?.unwrap_or(false),
         },
         tileable: js.boolean("tileable")?.unwrap_or(d.tileable),
-    })
+    };
+    js.finish()?;
+    Ok(options)
 }
 
 fn region_object(r: Region) -> JsValue {
@@ -104,7 +212,7 @@ fn region_object(r: Region) -> JsValue {
     ])
 }
 
-fn event_object(e: &Event) -> JsValue {
+fn event_object(e: &Event) -> JsResult<JsValue> {
     let patch = e.patch.map_or(JsValue::NULL, |p| {
         object(&[
             ("source", p.source.into()),
@@ -117,7 +225,7 @@ fn event_object(e: &Event) -> JsValue {
         ])
     });
     let (x, y, w, h) = e.rect;
-    object(&[
+    SCHEMA.event(&[
         ("kind", if e.done { "done" } else { "placed" }.into()),
         ("done", e.done.into()),
         ("patch", patch),
@@ -145,33 +253,42 @@ pub struct GraphcutTextures {
     session: Session,
 }
 
+js_session!(GraphcutTextures);
+
+/// One patch placement per step.
+impl JsSession for GraphcutTextures {
+    fn step_event(&mut self) -> JsResult<JsValue> {
+        event_object(&self.session.step()?)
+    }
+
+    fn is_done(&self) -> bool {
+        self.session.is_done()
+    }
+
+    fn size(&self) -> (usize, usize) {
+        let canvas = &self.session.synthesis().canvas;
+        (canvas.width, canvas.height)
+    }
+
+    fn memory_bytes(&self) -> u64 {
+        self.session.synthesis().working_set().bytes()
+    }
+
+    /// The output, blended as the options say.
+    fn render(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        render_into(&self.session.output()?, target)
+    }
+}
+
 #[wasm_bindgen]
 impl GraphcutTextures {
-    /// Options (all optional): `outputWidth`, `outputHeight` (256), `seed` (1), `placement`
-    /// ('random' | 'entire-patch' | 'sub-patch'), `k` (0.01), `errorRegion` (0 = a third of the
-    /// exemplar), `refinementPatches` (24), `gradientCost` (false), `blend` ('none' | 'feather' |
-    /// 'spline'), `rotate`, `mirror` (false), `scales` ([]), `perspective` (false), `tileable`
-    /// (false). Unknown keys and impossible values throw.
+    /// Options: see [`SCHEMA`] (every key optional). Unknown keys and impossible values throw.
     #[wasm_bindgen(constructor)]
     pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<GraphcutTextures> {
         let options = read_options(&options)?;
         Ok(GraphcutTextures {
             session: Session::new(exemplar.image(), options)?,
         })
-    }
-
-    /// Places one patch. Returns `{ kind: 'placed' | 'done', done, patch: { source, offsetX,
-    /// offsetY }, rect: { x, y, width, height }, region, pixelsTaken, cutCost, covered,
-    /// totalSeamCost, patchesPlaced }`.
-    pub fn step(&mut self) -> JsResult<JsValue> {
-        Ok(event_object(&self.session.step()?))
-    }
-
-    /// The estimated peak memory of this session, in bytes: what the constructor compared with
-    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
-    #[wasm_bindgen(getter, js_name = memoryEstimate)]
-    pub fn memory_estimate(&self) -> f64 {
-        self.session.synthesis().working_set().bytes() as f64
     }
 
     /// The broken-feature count on this output's carried feature map: every made pixel carries
@@ -208,42 +325,21 @@ impl GraphcutTextures {
         self.carried_broken_of(map.mask(), "map")
     }
 
-    #[wasm_bindgen(getter)]
-    pub fn done(&self) -> bool {
-        self.session.is_done()
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn width(&self) -> u32 {
-        self.session.synthesis().canvas.width as u32
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn height(&self) -> u32 {
-        self.session.synthesis().canvas.height as u32
-    }
-
-    /// Writes the output (blended as the options say) into `target` (`width * height * 4`).
-    #[wasm_bindgen(js_name = renderInto)]
-    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
-        render_into(&self.session.output()?, target)
-    }
-
     /// Seam pixels opaque red, the rest transparent (to draw over the image).
-    #[wasm_bindgen(js_name = renderSeams)]
-    pub fn render_seams(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+    #[wasm_bindgen(js_name = renderSeamsInto)]
+    pub fn render_seams_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
         write_rgba(&seam_overlay(&self.session.synthesis().canvas), target)
     }
 
     /// The per-pixel seam cost as a heat map (black: none, white: the largest).
-    #[wasm_bindgen(js_name = renderSeamCost)]
-    pub fn render_seam_cost(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+    #[wasm_bindgen(js_name = renderSeamCostInto)]
+    pub fn render_seam_cost_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
         write_rgba(&seam_heat_map(&self.session.synthesis().canvas), target)
     }
 
     /// The label map: every patch in its own colour.
-    #[wasm_bindgen(js_name = renderLabels)]
-    pub fn render_labels(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+    #[wasm_bindgen(js_name = renderLabelsInto)]
+    pub fn render_labels_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
         write_rgba(&label_map(&self.session.synthesis().canvas), target)
     }
 

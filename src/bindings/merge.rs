@@ -7,14 +7,55 @@ use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
 use super::exemplar::Exemplar;
-use super::options::object;
+use super::optimization::output_size;
+use super::options::OptionsReader;
 use super::pixels::{render_into, write_rgba};
+use super::schema::{DONE, EventField, Kind, Opt, Schema, kind_field};
+use super::session::{JsSession, js_session};
 use crate::core::error::check_size;
 use crate::core::{Error, Image};
+use crate::methods::graphcut::Blend;
+use crate::methods::graphcut::memory::working_set;
 use crate::methods::graphcut::merge::Merge;
 use crate::methods::graphcut::teaching::{label_map, seam_overlay};
 
-/// A merge of up to 8 source images into a `width` x `height` output.
+pub(crate) const SCHEMA: Schema = Schema {
+    class: "GraphcutMerge",
+    options_name: "GraphcutMergeOptions",
+    options: &[
+        output_size("outputWidth", 8192, Some("256"), "Output width in pixels."),
+        output_size(
+            "outputHeight",
+            8192,
+            Some("256"),
+            "Output height in pixels.",
+        ),
+        Opt {
+            key: "gradientCost",
+            kind: Kind::Boolean,
+            default: Some("true"),
+            doc: "Seam cost M' of eq. 5, which favours seams along edges, instead of M of eq. 1.",
+        },
+    ],
+    required: &[],
+    event_name: "GraphcutMergeEvent",
+    event: &[
+        kind_field("'merged' | 'done'"),
+        DONE,
+        EventField {
+            key: "source",
+            ts: "number | null",
+            doc: "The source laid down by this step (an index of `addSource`); null when none was.",
+        },
+        EventField {
+            key: "cutCost",
+            ts: "number",
+            doc: "Cost of this step's min cut.",
+        },
+    ],
+};
+
+/// A merge of up to 8 source images into an `outputWidth` x `outputHeight` output.
 #[wasm_bindgen]
 pub struct GraphcutMerge {
     width: usize,
@@ -26,20 +67,92 @@ pub struct GraphcutMerge {
     merge: Option<Merge>,
 }
 
+js_session!(GraphcutMerge);
+
+/// One source laid down per step.
+impl JsSession for GraphcutMerge {
+    fn step_event(&mut self) -> JsResult<JsValue> {
+        if self.merge.is_none() {
+            self.merge = Some(Merge::new(
+                self.width,
+                self.height,
+                self.sources.clone(),
+                self.constraints.clone(),
+                self.gradient_cost,
+            )?);
+        }
+        let anatomy = self.anatomy;
+        let merge = self.merge.as_mut().expect("built above");
+        merge.set_anatomy(anatomy);
+        let result = merge.step()?;
+        let done = merge.is_done();
+        let (source, cut) =
+            result.map_or((JsValue::NULL, 0.0), |(k, cut)| ((k as u32).into(), cut));
+        SCHEMA.event(&[
+            ("kind", if done { "done" } else { "merged" }.into()),
+            ("done", done.into()),
+            ("source", source),
+            ("cutCost", cut.into()),
+        ])
+    }
+
+    fn is_done(&self) -> bool {
+        self.merge.as_ref().is_some_and(Merge::is_done)
+    }
+
+    fn size(&self) -> (usize, usize) {
+        (self.width, self.height)
+    }
+
+    /// The merge's working set once built; before, the same estimate from the sources added.
+    fn memory_bytes(&self) -> u64 {
+        if let Some(m) = &self.merge {
+            return m.synthesis().working_set().bytes();
+        }
+        let dims: Vec<(usize, usize)> = self
+            .sources
+            .iter()
+            .map(|(s, _, _)| (s.width(), s.height()))
+            .collect();
+        let channels = self.sources.iter().map(|(s, _, _)| s.channels()).max();
+        let largest = dims.iter().map(|&(w, h)| w * h).max().unwrap_or(0);
+        working_set(
+            (self.width, self.height, channels.unwrap_or(4)),
+            &dims,
+            largest,
+            0,
+            Blend::None,
+        )
+        .bytes()
+    }
+
+    /// The merged image so far (black where no source reaches yet).
+    fn render(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        match &self.merge {
+            Some(m) => render_into(&m.synthesis().canvas.pixels, target),
+            None => write_rgba(&vec![0; self.width * self.height * 4], target),
+        }
+    }
+}
+
 #[wasm_bindgen]
 impl GraphcutMerge {
-    /// An empty merge; `gradientCost` chooses the seam cost M' (eq. 5), which favours seams
-    /// along edges.
+    /// An empty merge: `new GraphcutMerge({ outputWidth, outputHeight, gradientCost })` (see
+    /// [`SCHEMA`]); add sources with `addSource`.
     #[wasm_bindgen(constructor)]
-    pub fn new(width: u32, height: u32, gradient_cost: Option<bool>) -> JsResult<GraphcutMerge> {
-        let (width, height) = (width as usize, height as usize);
+    pub fn new(options: JsValue) -> JsResult<GraphcutMerge> {
+        let js = OptionsReader::new(&options, &SCHEMA)?;
+        let width = js.size("outputWidth")?.unwrap_or(256);
+        let height = js.size("outputHeight")?.unwrap_or(256);
+        let gradient_cost = js.boolean("gradientCost")?.unwrap_or(true);
+        js.finish()?;
         check_size("output", width, height)?;
         Ok(GraphcutMerge {
             width,
             height,
             sources: Vec::new(),
             constraints: vec![0; width * height],
-            gradient_cost: gradient_cost.unwrap_or(true),
+            gradient_cost,
             anatomy: false,
             merge: None,
         })
@@ -78,32 +191,6 @@ impl GraphcutMerge {
         Ok(())
     }
 
-    /// Lays the next source down. Returns `{ kind: 'merged' | 'done', done, source, cutCost }`.
-    pub fn step(&mut self) -> JsResult<JsValue> {
-        if self.merge.is_none() {
-            self.merge = Some(Merge::new(
-                self.width,
-                self.height,
-                self.sources.clone(),
-                self.constraints.clone(),
-                self.gradient_cost,
-            )?);
-        }
-        let anatomy = self.anatomy;
-        let merge = self.merge.as_mut().expect("built above");
-        merge.set_anatomy(anatomy);
-        let result = merge.step()?;
-        let done = merge.is_done();
-        let (source, cut) =
-            result.map_or((JsValue::NULL, 0.0), |(k, cut)| ((k as u32).into(), cut));
-        Ok(object(&[
-            ("kind", if done { "done" } else { "merged" }.into()),
-            ("done", done.into()),
-            ("source", source),
-            ("cutCost", cut.into()),
-        ]))
-    }
-
     /// Records each step's seam graph for [`Self::placement_graph`] (off by default).
     #[wasm_bindgen(js_name = setAnatomy)]
     pub fn set_anatomy(&mut self, on: bool) {
@@ -124,33 +211,9 @@ impl GraphcutMerge {
             .map_or(JsValue::NULL, super::graphcut::graph_object)
     }
 
-    #[wasm_bindgen(getter)]
-    pub fn done(&self) -> bool {
-        self.merge.as_ref().is_some_and(Merge::is_done)
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn width(&self) -> u32 {
-        self.width as u32
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn height(&self) -> u32 {
-        self.height as u32
-    }
-
-    /// The merged image so far (black where no source reaches yet).
-    #[wasm_bindgen(js_name = renderInto)]
-    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
-        match &self.merge {
-            Some(m) => render_into(&m.synthesis().canvas.pixels, target),
-            None => write_rgba(&vec![0; self.width * self.height * 4], target),
-        }
-    }
-
     /// The seams between sources, red over transparent.
-    #[wasm_bindgen(js_name = renderSeams)]
-    pub fn render_seams(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+    #[wasm_bindgen(js_name = renderSeamsInto)]
+    pub fn render_seams_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
         match &self.merge {
             Some(m) => write_rgba(&seam_overlay(&m.synthesis().canvas), target),
             None => write_rgba(&vec![0; self.width * self.height * 4], target),
@@ -158,8 +221,8 @@ impl GraphcutMerge {
     }
 
     /// Which source each pixel shows, one colour per source.
-    #[wasm_bindgen(js_name = renderSources)]
-    pub fn render_sources(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+    #[wasm_bindgen(js_name = renderSourcesInto)]
+    pub fn render_sources_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
         match &self.merge {
             Some(m) => write_rgba(&label_map(&m.synthesis().canvas), target),
             None => write_rgba(&vec![0; self.width * self.height * 4], target),

@@ -12,10 +12,12 @@ mod optimization;
 mod options;
 mod pixels;
 mod quality;
+mod schema;
+mod session;
 mod video;
 
 pub use design::{
-    LayerDesign, TextureBrush, TileableSession, deform_texture, deformation_set, make_tileable,
+    LayerDesign, TextureBrush, TileableTexture, deform_texture, deformation_set, make_tileable,
 };
 pub use exemplar::Exemplar;
 pub use features::{FeatureMap, FeatureSynthesis, detect_features, measure_broken_features};

@@ -9,6 +9,8 @@ use super::error::JsResult;
 use super::exemplar::Exemplar;
 use super::options::{OptionsReader, object};
 use super::pixels::render_into;
+use super::schema::{DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field};
+use super::session::{JsSession, js_session};
 use crate::core::{Error, from_rgba8};
 use crate::methods::optimization::SoftConstraints;
 use crate::methods::optimization::level::LevelSolver;
@@ -17,80 +19,227 @@ use crate::methods::optimization::teaching::{Field, field, offset_map};
 use crate::methods::optimization::{Energy, Event, EventKind, Options, Session, Start};
 use crate::solvers::nn::Search;
 
-const KNOWN: &[&str] = &[
-    "outputWidth",
-    "outputHeight",
-    "seed",
-    "levels",
-    "neighbourhoodSizes",
-    "iterations",
-    "r",
-    "mu",
-    "mStepMu",
-    "search",
-    "tileable",
-    "completeness",
-    "histogramMatching",
-    "energy",
-    "waveletDetailWeight",
-    "start",
-    "memoryBudgetMiB",
-];
+/// Output width and height: every session that makes an image of a chosen size takes them.
+pub(crate) const fn output_size(
+    key: &'static str,
+    max: u64,
+    default: Option<&'static str>,
+    doc: &'static str,
+) -> Opt {
+    Opt {
+        key,
+        kind: Kind::Integer { min: 1, max },
+        default,
+        doc,
+    }
+}
+
+const PHASES: &str = "'start' | 'first-match' | 'e-step' | 'm-step'";
+
+pub(crate) const SCHEMA: Schema = Schema {
+    class: "TextureOptimization",
+    options_name: "TextureOptimizationOptions",
+    options: &[
+        MEMORY_BUDGET,
+        output_size(
+            "outputWidth",
+            1 << 20,
+            Some("256"),
+            "Output width in pixels.",
+        ),
+        output_size(
+            "outputHeight",
+            1 << 20,
+            Some("256"),
+            "Output height in pixels.",
+        ),
+        SEED,
+        Opt {
+            key: "levels",
+            kind: Kind::Integer {
+                min: 0,
+                max: 1 << 20,
+            },
+            default: Some("3"),
+            doc: "Resolution levels (octaves) of the schedule.",
+        },
+        Opt {
+            key: "neighbourhoodSizes",
+            kind: Kind::Integers {
+                min: 0,
+                max: 1 << 20,
+            },
+            default: Some("[32, 16, 8]"),
+            doc: "Neighbourhood sizes, largest first; sizes that do not fit a level's exemplar are skipped.",
+        },
+        Opt {
+            key: "iterations",
+            kind: Kind::Integer {
+                min: 0,
+                max: 1 << 20,
+            },
+            default: Some("5"),
+            doc: "EM iterations per level and size at most (a level also ends when no match changes).",
+        },
+        Opt {
+            key: "r",
+            kind: Kind::Number,
+            default: Some("0.8"),
+            doc: "Robust IRLS exponent (2 is least squares); 0.8 is the paper's.",
+        },
+        Opt {
+            key: "mu",
+            kind: Kind::Number,
+            default: Some("0"),
+            doc: "Weight of the gradient energy (the paper uses 10); 0 turns it off.",
+        },
+        Opt {
+            key: "mStepMu",
+            kind: Kind::Number,
+            default: None,
+            doc: "The M-step's own gradient weight, where it should differ from `mu` (0..1000; not in the paper). At mu = 10 the search matches by gradient almost alone and outputs drift into colour blotches; 1 keeps a search that sees colour. Default: `mu` up to 1, then 1; set it to `mu` for the paper's single energy.",
+        },
+        Opt {
+            key: "search",
+            kind: Kind::Choice(&["patchmatch", "kmeans-tree", "exact"]),
+            default: Some("'patchmatch'"),
+            doc: "Nearest-neighbour search.",
+        },
+        Opt {
+            key: "tileable",
+            kind: Kind::Boolean,
+            default: Some("false"),
+            doc: "Make the output tile seamlessly.",
+        },
+        Opt {
+            key: "completeness",
+            kind: Kind::Number,
+            default: Some("1"),
+            doc: "Weight of the occurrence penalty that makes the output use all of the exemplar (0: the paper's M-step).",
+        },
+        Opt {
+            key: "histogramMatching",
+            kind: Kind::Number,
+            default: Some("1"),
+            doc: "How far the output's colour histogram is matched to the exemplar's (0..1).",
+        },
+        Opt {
+            key: "energy",
+            kind: Kind::Choice(&["pixels", "haar", "daubechies"]),
+            default: Some("'pixels'"),
+            doc: "Texture energy: pixels, or the wavelet energy of Shen et al. 2009.",
+        },
+        Opt {
+            key: "waveletDetailWeight",
+            kind: Kind::Number,
+            default: Some("4"),
+            doc: "Weight of the wavelet detail bands (with a wavelet `energy`).",
+        },
+        Opt {
+            key: "start",
+            kind: Kind::Choice(&["graphcut", "patches"]),
+            default: Some("'graphcut'"),
+            doc: "How the coarsest level starts: a graph-cut synthesis at its size, which keeps lattices and large elements whole, or random exemplar patches (closer to the paper's random start).",
+        },
+    ],
+    required: &[],
+    event_name: "TextureOptimizationEvent",
+    event: &[
+        kind_field("'level' | 'iteration' | 'part' | 'done'"),
+        DONE,
+        EventField {
+            key: "level",
+            ts: "number",
+            doc: "The level, 0 for the coarsest.",
+        },
+        EventField {
+            key: "levelCount",
+            ts: "number",
+            doc: "Levels of the schedule.",
+        },
+        EventField {
+            key: "octave",
+            ts: "number",
+            doc: "The level's octave.",
+        },
+        EventField {
+            key: "scale",
+            ts: "number",
+            doc: "2^octave: the level is 1/scale of the output size.",
+        },
+        EventField {
+            key: "neighbourhoodSize",
+            ts: "number",
+            doc: "Neighbourhood size of the iteration.",
+        },
+        EventField {
+            key: "iteration",
+            ts: "number",
+            doc: "Iteration at this level and size (the one under way for 'part').",
+        },
+        EventField {
+            key: "energy",
+            ts: "number",
+            doc: "The pixel term ||x_p - z_p||^r, normalised, whatever the `energy` option.",
+        },
+        EventField {
+            key: "matchEnergy",
+            ts: "number",
+            doc: "What the M-step minimised (equal to `energy` for 'pixels').",
+        },
+        EventField {
+            key: "changed",
+            ts: "number",
+            doc: "Matches that changed in this iteration.",
+        },
+        EventField {
+            key: "totalIterations",
+            ts: "number",
+            doc: "Iterations so far over all levels.",
+        },
+        EventField {
+            key: "solverIterations",
+            ts: "number",
+            doc: "Conjugate-gradient iterations of the gradient solve.",
+        },
+        EventField {
+            key: "phase",
+            ts: PHASES,
+            doc: "Where the step stopped: making the coarsest level's graph-cut start, the M-step on a level's up-sampled output, the E-step or the M-step.",
+        },
+        EventField {
+            key: "progress",
+            ts: "number",
+            doc: "Share of the iteration done, 0 to 1 (1 for a whole iteration).",
+        },
+    ],
+};
 
 /// Reads the options object; absent keys keep the defaults of [`Options`].
 fn read_options(value: &JsValue) -> JsResult<Options> {
-    let js = OptionsReader::new(value, KNOWN)?;
+    let js = OptionsReader::new(value, &SCHEMA)?;
     let d = Options::default();
-    let search = match js.string("search")? {
-        None => d.search,
-        Some(name) => Search::from_name(&name).ok_or_else(|| Error::InvalidParameter {
-            name: "search",
-            reason: format!("must be 'patchmatch', 'kmeans-tree' or 'exact', got '{name}'"),
-        })?,
-    };
-    let start = match js.string("start")? {
-        None => d.start,
-        Some(name) => Start::from_name(&name).ok_or_else(|| Error::InvalidParameter {
-            name: "start",
-            reason: format!("must be 'graphcut' or 'patches', got '{name}'"),
-        })?,
-    };
-    let energy = match js.string("energy")? {
-        None => d.energy,
-        Some(name) => Energy::from_name(&name).ok_or_else(|| Error::InvalidParameter {
-            name: "energy",
-            reason: format!("must be 'pixels', 'haar' or 'daubechies', got '{name}'"),
-        })?,
-    };
-    Ok(Options {
+    let options = Options {
         memory_budget_mib: js.memory_budget()?,
-        start,
-        energy,
+        start: js.choice("start", Start::from_name)?.unwrap_or(d.start),
+        energy: js.choice("energy", Energy::from_name)?.unwrap_or(d.energy),
         wavelet_detail_weight: js
             .number("waveletDetailWeight")?
             .map_or(d.wavelet_detail_weight, |v| v as f32),
-        output_width: js
-            .integer("outputWidth", 1, 1 << 20)?
-            .map_or(d.output_width, |v| v as usize),
-        output_height: js
-            .integer("outputHeight", 1, 1 << 20)?
-            .map_or(d.output_height, |v| v as usize),
-        seed: js.integer("seed", 0, (1 << 53) - 1)?.unwrap_or(d.seed),
-        levels: js
-            .integer("levels", 0, 1 << 20)?
-            .map_or(d.levels, |v| v as usize),
+        output_width: js.size("outputWidth")?.unwrap_or(d.output_width),
+        output_height: js.size("outputHeight")?.unwrap_or(d.output_height),
+        seed: js.integer("seed")?.unwrap_or(d.seed),
+        levels: js.size("levels")?.unwrap_or(d.levels),
         neighbourhood_sizes: js
-            .integers("neighbourhoodSizes", 0, 1 << 20)?
+            .integers("neighbourhoodSizes")?
             .map_or(d.neighbourhood_sizes, |v| {
                 v.into_iter().map(|s| s as usize).collect()
             }),
-        iterations: js
-            .integer("iterations", 0, 1 << 20)?
-            .map_or(d.iterations, |v| v as usize),
+        iterations: js.size("iterations")?.unwrap_or(d.iterations),
         r: js.number("r")?.map_or(d.r, |v| v as f32),
         mu: js.number("mu")?.map_or(d.mu, |v| v as f32),
         m_step_mu: js.number("mStepMu")?.map(|v| v as f32),
-        search,
+        search: js.choice("search", Search::from_name)?.unwrap_or(d.search),
         tileable: js.boolean("tileable")?.unwrap_or(d.tileable),
         completeness: js
             .number("completeness")?
@@ -98,17 +247,19 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
         histogram_matching: js
             .number("histogramMatching")?
             .map_or(d.histogram_matching, |v| v as f32),
-    })
+    };
+    js.finish()?;
+    Ok(options)
 }
 
-fn event_object(e: &Event) -> JsValue {
+fn event_object(e: &Event) -> JsResult<JsValue> {
     let kind = match e.kind {
         EventKind::Part => "part",
         EventKind::Level => "level",
         EventKind::Iteration => "iteration",
         EventKind::Done => "done",
     };
-    object(&[
+    SCHEMA.event(&[
         ("kind", kind.into()),
         ("done", (e.kind == EventKind::Done).into()),
         ("level", (e.level as u32).into()),
@@ -144,16 +295,39 @@ pub struct TextureOptimization {
     session: Session,
 }
 
+js_session!(TextureOptimization);
+
+/// One EM iteration per step (on a large output, about 512x512 and up, an iteration is split
+/// over several steps of kind 'part' so that none blocks for long; see the event table).
+impl JsSession for TextureOptimization {
+    fn step_event(&mut self) -> JsResult<JsValue> {
+        event_object(&self.session.step()?)
+    }
+
+    fn is_done(&self) -> bool {
+        self.session.is_done()
+    }
+
+    /// The full size: coarse levels are up-sampled when rendered.
+    fn size(&self) -> (usize, usize) {
+        let o = self.session.options();
+        (o.output_width, o.output_height)
+    }
+
+    fn memory_bytes(&self) -> u64 {
+        self.session
+            .working_set(self.session.constraints().is_some())
+            .bytes()
+    }
+
+    fn render(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        render_into(&self.session.output_full_size()?, target)
+    }
+}
+
 #[wasm_bindgen]
 impl TextureOptimization {
-    /// Plans the schedule for `exemplar` and `options` (all optional): `outputWidth`,
-    /// `outputHeight` (256), `seed` (1), `levels` (3), `neighbourhoodSizes` ([32, 16, 8]),
-    /// `iterations` per level (5), `r` (0.8), `mu` (0), `mStepMu` (the M-step's own gradient
-    /// weight; default `mu` up to 1, 1 above; set it to `mu` for the paper's single energy),
-    /// `search` ('patchmatch' | 'kmeans-tree' | 'exact'), `tileable` (false), `completeness`
-    /// (1), `histogramMatching` (1), `energy` ('pixels' | 'haar' | 'daubechies', default
-    /// 'pixels': the wavelet texture energy of Shen et al. 2009), `waveletDetailWeight` (weight
-    /// of the wavelet detail bands, default 4).
+    /// Plans the schedule for `exemplar` and `options` (see [`SCHEMA`]: every key optional).
     /// Unknown keys and impossible values throw.
     #[wasm_bindgen(constructor)]
     pub fn new(exemplar: &Exemplar, options: JsValue) -> JsResult<TextureOptimization> {
@@ -161,45 +335,6 @@ impl TextureOptimization {
         Ok(TextureOptimization {
             session: Session::new(exemplar.image(), options)?,
         })
-    }
-
-    /// Runs one EM iteration. Returns `{ kind: 'level' | 'iteration' | 'part' | 'done', done,
-    /// level, levelCount, octave, scale, neighbourhoodSize, iteration, energy, matchEnergy,
-    /// changed, totalIterations, solverIterations, phase, progress }`. On a large output
-    /// (about 512x512 and up) an iteration is split over several steps so that none blocks
-    /// for long: those steps report kind 'part', the `phase` they stopped in ('first-match':
-    /// the M-step on a level's up-sampled output, 'e-step', 'm-step') and `progress`, the
-    /// share of the iteration done (0 to 1); `iteration` is then the one under way. (solverIterations: the gradient solve's
-    /// conjugate-gradient iterations; energy: the pixel term ||x_p - z_p||^r whatever the
-    /// `energy` option, so runs compare on one plot; matchEnergy: what the M-step minimised,
-    /// with the wavelet term, equal to energy for 'pixels').
-    pub fn step(&mut self) -> JsResult<JsValue> {
-        Ok(event_object(&self.session.step()?))
-    }
-
-    /// The estimated peak memory of this session, in bytes: what the constructor compared with
-    /// the memory budget (`memoryBudgetMiB`, default 1024 MiB).
-    #[wasm_bindgen(getter, js_name = memoryEstimate)]
-    pub fn memory_estimate(&self) -> f64 {
-        self.session
-            .working_set(self.session.constraints().is_some())
-            .bytes() as f64
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn done(&self) -> bool {
-        self.session.is_done()
-    }
-
-    /// Output width (the full size; coarse levels are up-sampled when rendered).
-    #[wasm_bindgen(getter)]
-    pub fn width(&self) -> u32 {
-        self.session.options().output_width as u32
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn height(&self) -> u32 {
-        self.session.options().output_height as u32
     }
 
     /// The search in use: 'patchmatch', 'kmeans-tree' or 'exact'.
@@ -214,12 +349,6 @@ impl TextureOptimization {
         self.session.options().energy.name().into()
     }
 
-    /// Writes the current output as RGBA8 into `target` (`width * height * 4` long).
-    #[wasm_bindgen(js_name = renderInto)]
-    pub fn render_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
-        render_into(&self.session.output_full_size()?, target)
-    }
-
     /// Soft constraints (Kwatra et al. 2005, section 4): `rgba` is `outputWidth * outputHeight *
     /// 4` bytes of desired colours whose alpha is the mask (0 = free, 255 = fully constrained),
     /// e.g. the `data` of a canvas the user painted on; `lambda` (0 to 1e6) is the weight,
@@ -227,7 +356,7 @@ impl TextureOptimization {
     /// step; on a finished run it reopens the finest level so the output follows the strokes.
     #[wasm_bindgen(js_name = setConstraints)]
     pub fn set_constraints(&mut self, rgba: &[u8], lambda: f64) -> JsResult<()> {
-        let (w, h) = (self.width() as usize, self.height() as usize);
+        let (w, h) = JsSession::size(self);
         if rgba.len() != w * h * 4 {
             return Err(Error::LengthMismatch {
                 what: "constraint pixels (RGBA, output size)",
@@ -263,8 +392,8 @@ impl TextureOptimization {
 
     /// Writes the colour-coded offset map (which exemplar position each pixel comes from: red =
     /// exemplar x, green = exemplar y) into `target`.
-    #[wasm_bindgen(js_name = renderOffsetMap)]
-    pub fn render_offset_map(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+    #[wasm_bindgen(js_name = renderOffsetMapInto)]
+    pub fn render_offset_map_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
         render_into(&offset_map(&self.session)?, target)
     }
 

@@ -5,6 +5,7 @@ use js_sys::{Reflect, Uint8ClampedArray};
 use wasm_bindgen::{JsCast, JsValue};
 
 use super::error::JsResult;
+use super::schema::invalid;
 use crate::core::{Error, Image, from_rgba8, to_rgba8};
 
 /// Reads `{ data, width, height }` (a canvas `ImageData`, or any object of that shape, so it works
@@ -50,14 +51,6 @@ fn dimension(value: &JsValue, name: &'static str) -> JsResult<usize> {
             "must be a non-negative whole number",
         )),
     }
-}
-
-fn invalid(name: &'static str, reason: &str) -> wasm_bindgen::JsError {
-    Error::InvalidParameter {
-        name,
-        reason: reason.into(),
-    }
-    .into()
 }
 
 /// Refuses a target that is not a byte array (`null`, a number, a plain array) before any method

@@ -1,14 +1,16 @@
 //! `VideoClip` and `VideoTextures`: graph-cut video textures (Kwatra et al. 2003, section 7) for
 //! JS. Each `step()` places one spatio-temporal patch; frames, the seam overlay and the x-t slice
-//! render into the caller's `Uint8Array`s.
+//! render into the caller's `Uint8ClampedArray`s.
 
-use js_sys::Uint8Array;
+use js_sys::Uint8ClampedArray;
 use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
 use super::graphcut::{costs_object, graph_object};
 use super::options::{OptionsReader, object};
 use super::pixels::check_target;
+use super::schema::{DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field, set};
+use super::session::{JsSession, js_session};
 use crate::core::Error;
 use crate::methods::video::teaching::{frame_rgba, seams_rgba, slice_xt_rgba};
 use crate::methods::video::{Event, Mode, Options, Placement, Session, Volume};
@@ -51,40 +53,140 @@ impl VideoClip {
     }
 }
 
-const KNOWN: &[&str] = &[
-    "mode",
-    "outputWidth",
-    "outputHeight",
-    "outputFrames",
-    "fixedFrames",
-    "transitionWindow",
-    "placement",
-    "seed",
-    "k",
-    "refinementPatches",
-    "gradientCost",
-    "memoryBudgetMiB",
-];
+const fn count(
+    key: &'static str,
+    min: u64,
+    max: u64,
+    default: Option<&'static str>,
+    doc: &'static str,
+) -> Opt {
+    Opt {
+        key,
+        kind: Kind::Integer { min, max },
+        default,
+        doc,
+    }
+}
+
+pub(crate) const SCHEMA: Schema = Schema {
+    class: "VideoTextures",
+    options_name: "VideoTexturesOptions",
+    options: &[
+        MEMORY_BUDGET,
+        Opt {
+            key: "mode",
+            kind: Kind::Choice(&["loop", "offsets", "extend"]),
+            default: Some("'loop'"),
+            doc: "'loop' (7.A: best transition by frame-pair SSD, optimal seam surface around it; the output is the loop), 'offsets' (7.B: the whole clip at random temporal offsets), 'extend' (7.C/7.E: spatio-temporal patches; frames may be larger).",
+        },
+        count(
+            "outputWidth",
+            1,
+            1 << 16,
+            None,
+            "Only 'extend' may differ from the clip. Default: the clip's width.",
+        ),
+        count(
+            "outputHeight",
+            1,
+            1 << 16,
+            None,
+            "Only 'extend' may differ from the clip. Default: the clip's height.",
+        ),
+        count(
+            "outputFrames",
+            1,
+            1 << 16,
+            None,
+            "Not for 'loop' (it chooses the loop length). Default: twice the clip's frames ('offsets'), the clip's ('extend').",
+        ),
+        count(
+            "fixedFrames",
+            0,
+            1 << 16,
+            Some("10"),
+            "k of 7.D for 'offsets' and 'extend': the first and last k frames fixed, then the first k removed, so the output loops; 0 = no loop. At most the clip's frame count.",
+        ),
+        count(
+            "transitionWindow",
+            3,
+            1 << 16,
+            Some("60"),
+            "'loop': the most frames of the seam window around the transition (shorter clips get at most a sixth of their frames on either side).",
+        ),
+        Opt {
+            key: "placement",
+            kind: Kind::Choice(&["random", "matching"]),
+            default: Some("'random'"),
+            doc: "'random', or 'matching' (7.C: 3-D FFT SSD of the error region against every translation, eq. 3).",
+        },
+        SEED,
+        Opt {
+            key: "k",
+            kind: Kind::Number,
+            default: Some("0.01"),
+            doc: "k of eq. 3 for matching placement, > 0.",
+        },
+        count(
+            "refinementPatches",
+            0,
+            1 << 10,
+            Some("2"),
+            "Patches placed over the worst seams once covered.",
+        ),
+        Opt {
+            key: "gradientCost",
+            kind: Kind::Boolean,
+            default: Some("false"),
+            doc: "Seam cost M' (eq. 5, divided by the gradients) instead of M.",
+        },
+    ],
+    required: &[],
+    event_name: "VideoTexturesEvent",
+    event: &[
+        kind_field("'placed' | 'done'"),
+        DONE,
+        EventField {
+            key: "patch",
+            ts: "{ index: number; offsetX: number; offsetY: number; offsetT: number } | null",
+            doc: "The patch placed by this step: its number and its offset in the output (x, y in pixels, t in output frames); null when the step placed none.",
+        },
+        EventField {
+            key: "patchesPlaced",
+            ts: "number",
+            doc: "Patches placed so far.",
+        },
+        EventField {
+            key: "pixelsTaken",
+            ts: "number",
+            doc: "Output pixels (voxels: pixels of all frames) the new patch took.",
+        },
+        EventField {
+            key: "cutCost",
+            ts: "number",
+            doc: "Cost of this placement's min cut.",
+        },
+        EventField {
+            key: "covered",
+            ts: "boolean",
+            doc: "Whether every output voxel has been covered.",
+        },
+        EventField {
+            key: "coverage",
+            ts: "number",
+            doc: "Share of the output voxels covered, 0 to 1.",
+        },
+        EventField {
+            key: "loopFrame",
+            ts: "number | null",
+            doc: "'loop': the output frame where the loop's transition lies, once known; null otherwise.",
+        },
+    ],
+};
 
 fn read_options(value: &JsValue) -> JsResult<Options> {
-    let js = OptionsReader::new(value, KNOWN)?;
+    let js = OptionsReader::new(value, &SCHEMA)?;
     let d = Options::default();
-    let mode = match js.string("mode")? {
-        None => d.mode,
-        Some(name) => Mode::from_name(&name).ok_or_else(|| Error::InvalidParameter {
-            name: "mode",
-            reason: format!("must be 'loop', 'offsets' or 'extend', got '{name}'"),
-        })?,
-    };
-    let placement = match js.string("placement")? {
-        None => d.placement,
-        Some(name) => Placement::from_name(&name).ok_or_else(|| Error::InvalidParameter {
-            name: "placement",
-            reason: format!("must be 'random' or 'matching', got '{name}'"),
-        })?,
-    };
-    let size =
-        |name| -> JsResult<Option<usize>> { Ok(js.integer(name, 1, 1 << 16)?.map(|v| v as usize)) };
     let k = match js.number("k")? {
         Some(v) if v <= 0.0 => {
             return Err(Error::InvalidParameter {
@@ -95,42 +197,51 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
         }
         v => v.map_or(d.k, |v| v as f32),
     };
-    Ok(Options {
+    let options = Options {
         memory_budget_mib: js.memory_budget()?,
-        mode,
-        output_width: size("outputWidth")?,
-        output_height: size("outputHeight")?,
-        output_frames: size("outputFrames")?,
-        fixed_frames: js
-            .integer("fixedFrames", 0, 1 << 16)?
-            .map_or(d.fixed_frames, |v| v as usize),
-        transition_window: js
-            .integer("transitionWindow", 3, 1 << 16)?
-            .map_or(d.transition_window, |v| v as usize),
-        placement,
-        seed: js.integer("seed", 0, (1 << 53) - 1)?.unwrap_or(d.seed),
+        mode: js.choice("mode", Mode::from_name)?.unwrap_or(d.mode),
+        output_width: js.size("outputWidth")?,
+        output_height: js.size("outputHeight")?,
+        output_frames: js.size("outputFrames")?,
+        fixed_frames: js.size("fixedFrames")?.unwrap_or(d.fixed_frames),
+        transition_window: js.size("transitionWindow")?.unwrap_or(d.transition_window),
+        placement: js
+            .choice("placement", Placement::from_name)?
+            .unwrap_or(d.placement),
+        seed: js.integer("seed")?.unwrap_or(d.seed),
         k,
         refinement_patches: js
-            .integer("refinementPatches", 0, 1 << 10)?
-            .map_or(d.refinement_patches, |v| v as usize),
+            .size("refinementPatches")?
+            .unwrap_or(d.refinement_patches),
         gradient_cost: js.boolean("gradientCost")?.unwrap_or(d.gradient_cost),
-    })
+    };
+    js.finish()?;
+    Ok(options)
 }
 
-fn event_object(e: &Event) -> JsValue {
+fn event_object(e: &Event) -> JsResult<JsValue> {
     let (tx, ty, tt) = e.offset;
-    object(&[
+    let patch = e.patch.map_or(JsValue::NULL, |index| {
+        object(&[
+            ("index", (index as u32).into()),
+            ("offsetX", tx.into()),
+            ("offsetY", ty.into()),
+            ("offsetT", tt.into()),
+        ])
+    });
+    SCHEMA.event(&[
+        ("kind", if e.done { "done" } else { "placed" }.into()),
         ("done", e.done.into()),
-        ("patch", e.patch.map_or(-1.0, |p| p as f64).into()),
-        ("patches", (e.patches as u32).into()),
-        ("tx", tx.into()),
-        ("ty", ty.into()),
-        ("tt", tt.into()),
-        ("voxelsTaken", (e.voxels_taken as f64).into()),
+        ("patch", patch),
+        ("patchesPlaced", (e.patches as u32).into()),
+        ("pixelsTaken", (e.voxels_taken as f64).into()),
         ("cutCost", e.cut_cost.into()),
         ("covered", e.covered.into()),
         ("coverage", e.coverage.into()),
-        ("loopFrame", e.loop_frame.map_or(-1.0, |f| f as f64).into()),
+        (
+            "loopFrame",
+            e.loop_frame.map_or(JsValue::NULL, |f| (f as f64).into()),
+        ),
     ])
 }
 
@@ -138,54 +249,55 @@ fn event_object(e: &Event) -> JsValue {
 #[wasm_bindgen]
 pub struct VideoTextures {
     session: Session,
-    /// A reusable RGBA buffer for the renderers.
-    buffer: Vec<u8>,
     /// The first frame the last placed patch reached into.
     last_frame: usize,
 }
 
-#[wasm_bindgen]
-impl VideoTextures {
-    /// Options (all optional): `mode` ('loop' | 'offsets' | 'extend', default 'loop'),
-    /// `outputWidth`, `outputHeight` (the clip's; only 'extend' may change them), `outputFrames`
-    /// (twice the clip's for 'offsets', the clip's for 'extend'; not for 'loop'), `fixedFrames`
-    /// (10; 0 = no loop), `transitionWindow` (60), `placement` ('random' | 'matching'), `seed`
-    /// (1), `k` (0.01), `refinementPatches` (2), `gradientCost` (false). Unknown keys, bad values
-    /// and videos beyond the memory budget (`memoryBudgetMiB`, default 1024 MiB) throw.
-    #[wasm_bindgen(constructor)]
-    pub fn new(clip: &VideoClip, options: JsValue) -> JsResult<VideoTextures> {
-        let options = read_options(&options)?;
-        Ok(VideoTextures {
-            session: Session::new(clip.volume.clone(), options)?,
-            buffer: Vec::new(),
-            last_frame: 0,
-        })
-    }
+js_session!(VideoTextures);
 
-    /// Places one patch. Returns `{ done, patch, patches, tx, ty, tt, voxelsTaken, cutCost,
-    /// covered, coverage, loopFrame }` (`patch` and `loopFrame` are -1 when none).
-    pub fn step(&mut self) -> JsResult<JsValue> {
+/// One spatio-temporal patch per step.
+impl JsSession for VideoTextures {
+    fn step_event(&mut self) -> JsResult<JsValue> {
         let event = self.session.step()?;
         if event.patch.is_some() {
             let d = self.session.size().2 as i64;
             self.last_frame = i64::from(event.offset.2).clamp(0, (d - 1).max(0)) as usize;
         }
-        Ok(event_object(&event))
+        event_object(&event)
     }
 
-    #[wasm_bindgen(getter)]
-    pub fn done(&self) -> bool {
+    fn is_done(&self) -> bool {
         self.session.is_done()
     }
 
-    #[wasm_bindgen(getter)]
-    pub fn width(&self) -> u32 {
-        self.session.size().0 as u32
+    fn size(&self) -> (usize, usize) {
+        let (w, h, _) = self.session.size();
+        (w, h)
     }
 
-    #[wasm_bindgen(getter)]
-    pub fn height(&self) -> u32 {
-        self.session.size().1 as u32
+    fn memory_bytes(&self) -> u64 {
+        self.session.working_set().bytes()
+    }
+
+    /// The frame the last patch reached into (frame 0 before the first step): what a generic
+    /// progress view (a worker's step image, the CLI) shows.
+    fn render(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        let t = self.current_frame();
+        self.render(target, |s, out| frame_rgba(s, t, out))
+    }
+}
+
+#[wasm_bindgen]
+impl VideoTextures {
+    /// Options: see [`SCHEMA`] (every key optional). Unknown keys, bad values and videos beyond
+    /// the memory budget throw.
+    #[wasm_bindgen(constructor)]
+    pub fn new(clip: &VideoClip, options: JsValue) -> JsResult<VideoTextures> {
+        let options = read_options(&options)?;
+        Ok(VideoTextures {
+            session: Session::new(clip.volume.clone(), options)?,
+            last_frame: 0,
+        })
     }
 
     #[wasm_bindgen(getter)]
@@ -193,40 +305,41 @@ impl VideoTextures {
         self.session.size().2 as u32
     }
 
-    /// Output frame `t` as RGBA into `rgba` (`width * height * 4`).
-    #[wasm_bindgen(js_name = frameInto)]
-    pub fn frame_into(&mut self, t: u32, rgba: &Uint8Array) -> JsResult<()> {
-        self.render(rgba, |s, out| frame_rgba(s, t as usize, out))
+    /// Output frame `t` as RGBA into `target` (`width * height * 4`).
+    #[wasm_bindgen(js_name = renderFrameInto)]
+    pub fn render_frame_into(&self, t: u32, target: &Uint8ClampedArray) -> JsResult<()> {
+        self.render(target, |s, out| frame_rgba(s, t as usize, out))
     }
 
     /// The seam overlay of frame `t`: spatial seams opaque red, temporal ones translucent yellow,
     /// transparent elsewhere (`width * height * 4`).
-    #[wasm_bindgen(js_name = seamsInto)]
-    pub fn seams_into(&mut self, t: u32, rgba: &Uint8Array) -> JsResult<()> {
-        self.render(rgba, |s, out| seams_rgba(s, t as usize, out))
+    #[wasm_bindgen(js_name = renderSeamsInto)]
+    pub fn render_seams_into(&self, t: u32, target: &Uint8ClampedArray) -> JsResult<()> {
+        self.render(target, |s, out| seams_rgba(s, t as usize, out))
     }
 
     /// The x-t slice at row `y` (`width` x `frames`, row t = frame t) with seams in red
     /// (`width * frames * 4`).
-    #[wasm_bindgen(js_name = sliceXtInto)]
-    pub fn slice_xt_into(&mut self, y: u32, rgba: &Uint8Array) -> JsResult<()> {
-        self.render(rgba, |s, out| slice_xt_rgba(s, y as usize, out))
+    #[wasm_bindgen(js_name = renderSliceXtInto)]
+    pub fn render_slice_xt_into(&self, y: u32, target: &Uint8ClampedArray) -> JsResult<()> {
+        self.render(target, |s, out| slice_xt_rgba(s, y as usize, out))
     }
 
-    /// Output frame `t` as a new RGBA `Uint8Array` (for workers, where a buffer cannot be
-    /// filled across the boundary).
-    pub fn frame(&self, t: u32) -> JsResult<Vec<u8>> {
+    /// Output frame `t` as a new RGBA `Uint8ClampedArray` (for workers, where a buffer cannot
+    /// be filled across the boundary).
+    pub fn frame(&self, t: u32) -> JsResult<Uint8ClampedArray> {
         self.rendered(self.pixels(), |s, out| frame_rgba(s, t as usize, out))
     }
 
-    /// The seam overlay of frame `t` as a new RGBA `Uint8Array` (see `seamsInto`).
-    pub fn seams(&self, t: u32) -> JsResult<Vec<u8>> {
+    /// The seam overlay of frame `t` as a new RGBA `Uint8ClampedArray` (see `renderSeamsInto`).
+    pub fn seams(&self, t: u32) -> JsResult<Uint8ClampedArray> {
         self.rendered(self.pixels(), |s, out| seams_rgba(s, t as usize, out))
     }
 
-    /// The x-t slice at row `y` as a new RGBA `Uint8Array`, `width` x `frames` (see `sliceXtInto`).
+    /// The x-t slice at row `y` as a new RGBA `Uint8ClampedArray`, `width` x `frames` (see
+    /// `renderSliceXtInto`).
     #[wasm_bindgen(js_name = sliceXt)]
-    pub fn slice_xt(&self, y: u32) -> JsResult<Vec<u8>> {
+    pub fn slice_xt(&self, y: u32) -> JsResult<Uint8ClampedArray> {
         let (w, _, d) = self.session.size();
         self.rendered(w * d, |s, out| slice_xt_rgba(s, y as usize, out))
     }
@@ -284,14 +397,6 @@ impl VideoTextures {
         set(&value, "frames", (slice.frames as u32).into());
         value
     }
-
-    /// The frame the last patch reached into (frame 0 before the first step), as RGBA: what a
-    /// generic progress view (a worker's step image, the CLI) shows.
-    #[wasm_bindgen(js_name = renderInto)]
-    pub fn render_into(&mut self, rgba: &Uint8Array) -> JsResult<()> {
-        let t = self.current_frame();
-        self.render(rgba, |s, out| frame_rgba(s, t, out))
-    }
 }
 
 impl VideoTextures {
@@ -309,26 +414,23 @@ impl VideoTextures {
         &self,
         pixels: usize,
         draw: impl FnOnce(&Session, &mut [u8]) -> crate::core::Result<()>,
-    ) -> JsResult<Vec<u8>> {
+    ) -> JsResult<Uint8ClampedArray> {
         let mut out = vec![0u8; pixels * 4];
         draw(&self.session, &mut out)?;
-        Ok(out)
+        Ok(Uint8ClampedArray::from(out.as_slice()))
     }
 
+    /// Draws into a buffer of the target's length (the drawing checks it against the view's
+    /// size), then copies it into the target.
     fn render(
-        &mut self,
-        rgba: &Uint8Array,
+        &self,
+        target: &Uint8ClampedArray,
         draw: impl FnOnce(&Session, &mut [u8]) -> crate::core::Result<()>,
     ) -> JsResult<()> {
-        check_target(rgba)?;
-        self.buffer.resize(rgba.length() as usize, 0);
-        draw(&self.session, &mut self.buffer)?;
-        rgba.copy_from(&self.buffer);
+        check_target(target)?;
+        let mut buffer = vec![0u8; target.length() as usize];
+        draw(&self.session, &mut buffer)?;
+        target.copy_from(&buffer);
         Ok(())
     }
-}
-
-/// Sets `key` on an object this module made (it cannot fail on a plain object).
-fn set(object: &JsValue, key: &str, value: JsValue) {
-    let _ = js_sys::Reflect::set(object, &key.into(), &value);
 }

@@ -73,6 +73,8 @@ pub struct Session {
     last: Option<Event>,
     /// The last placement's cost slice, while the anatomy is recorded.
     last_costs: Option<CostSlice>,
+    /// What the constructor checked against the memory budget.
+    working_set: WorkingSet,
 }
 
 impl Session {
@@ -88,13 +90,13 @@ impl Session {
             Mode::Loop => {
                 let h = half_window(input.2, options.transition_window);
                 let window = 2 * h + 1;
-                WorkingSet {
+                let working_set = WorkingSet {
                     input_voxels: plane(input.0, input.1) * (input.2 + 2 * window),
                     output_voxels: plane(input.0, input.1) * (window + 1 + input.2 / 4),
                     patch_voxels: plane(input.0, input.1) * window,
                     search_bytes: 0,
-                }
-                .check(input, input, options.memory_budget_mib)?;
+                };
+                working_set.check(input, input, options.memory_budget_mib)?;
                 let tr = best_transition(&clip, options.transition_window)?;
                 let h = tr.half_window;
                 let a = clip.frames_range(tr.from - h - 1, 2 * h + 1)?;
@@ -118,6 +120,7 @@ impl Session {
                     refinements: 0,
                     last: None,
                     last_costs: None,
+                    working_set,
                 })
             }
             Mode::Offsets | Mode::Extend => {
@@ -130,13 +133,13 @@ impl Session {
                 } else {
                     0
                 };
-                WorkingSet {
+                let working_set = WorkingSet {
                     input_voxels: plane(input.0, input.1) * (input.2 + k),
                     output_voxels: plane(size.0, size.1) * total,
                     patch_voxels: plane(input.0, input.1) * input.2,
                     search_bytes,
-                }
-                .check(input, size, options.memory_budget_mib)?;
+                };
+                working_set.check(input, size, options.memory_budget_mib)?;
                 let mut sources = vec![Source::new(clip.clone())];
                 if k > 0 {
                     sources.push(Source::new(clip.frames_range(0, k)?));
@@ -160,6 +163,7 @@ impl Session {
                     refinements: 0,
                     last: None,
                     last_costs: None,
+                    working_set,
                 })
             }
         }
@@ -168,6 +172,12 @@ impl Session {
     #[must_use]
     pub fn synthesis(&self) -> &Synthesis {
         &self.synthesis
+    }
+
+    /// The estimated working set the constructor checked against the memory budget.
+    #[must_use]
+    pub fn working_set(&self) -> WorkingSet {
+        self.working_set
     }
 
     #[must_use]
