@@ -48,7 +48,7 @@ async function runCase(method, size, budget) {
       d.addLayer(texture, undefined);
       return d;
     },
-    tileable: () => new lib.TileableSession(input, { memoryBudgetMiB: budget }),
+    tileable: () => new lib.TileableTexture(input, { memoryBudgetMiB: budget }),
   }[method];
   const start = performance.now();
   const session = make();

@@ -54,10 +54,10 @@ for (const c of cases) {
     const t = performance.now();
     event = video.step();
     longest = Math.max(longest, performance.now() - t);
-    if (event.patch >= 0) patches++;
+    if (event.patch !== null) patches++;
   }
   const seconds = (performance.now() - started) / 1000;
-  const loop = event?.loopFrame >= 0 ? `, loop closes at frame ${event.loopFrame + 1}` : '';
+  const loop = event?.loopFrame != null ? `, loop closes at frame ${event.loopFrame + 1}` : '';
   console.log(`${c.name.padEnd(42)} ${String(patches).padStart(8)} ${seconds.toFixed(1).padStart(8)} ${longest.toFixed(0).padStart(12)} ${String(c.goal).padStart(7)}  ${video.width}x${video.height}x${video.frames}${loop}`);
   video.free();
   input.free();

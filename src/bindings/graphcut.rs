@@ -42,7 +42,7 @@ pub(crate) const SCHEMA: Schema = Schema {
         Opt {
             key: "placement",
             kind: Kind::Choice(&["random", "entire-patch", "sub-patch"]),
-            default: Some("'random'"),
+            default: Some("'entire-patch'"),
             doc: "Patch placement (section 3.2).",
         },
         Opt {

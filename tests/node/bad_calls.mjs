@@ -90,28 +90,28 @@ export const BAD_CALLS = [
   ['flowField: t = 2^32 - 1', () => api.flowField({ type: 'vortex', period: 7 }, 8, 8, 2 ** 32 - 1), OK],
   ['flowField: t = NaN', () => api.flowField({ type: 'vortex' }, 8, 8, NaN), OK],
   // GraphcutMerge.
-  ['GraphcutMerge: 0x0', () => new api.GraphcutMerge(0, 0), 'size'],
-  ['GraphcutMerge: huge', () => new api.GraphcutMerge(1e6, 1e6), 'size'],
-  ['GraphcutMerge: step with no source', () => new api.GraphcutMerge(16, 16).step(), { either: /source/ }],
-  ['GraphcutMerge: mask too short', () => new api.GraphcutMerge(16, 16).setConstraints(new Uint8Array(10)), 'constraint mask'],
+  ['GraphcutMerge: 0x0', () => new api.GraphcutMerge({ outputWidth: 0, outputHeight: 0 }), 'outputWidth'],
+  ['GraphcutMerge: huge', () => new api.GraphcutMerge({ outputWidth: 1e6, outputHeight: 1e6 }), 'outputWidth'],
+  ['GraphcutMerge: step with no source', () => new api.GraphcutMerge({ outputWidth: 16, outputHeight: 16 }).step(), { either: /source/ }],
+  ['GraphcutMerge: mask too short', () => new api.GraphcutMerge({ outputWidth: 16, outputHeight: 16 }).setConstraints(new Uint8Array(10)), 'constraint mask'],
   ['GraphcutMerge: mask names a missing source', () => {
-    const merge = new api.GraphcutMerge(16, 16);
+    const merge = new api.GraphcutMerge({ outputWidth: 16, outputHeight: 16 });
     merge.addSource(ex(), 0, 0);
     merge.setConstraints(new Uint8Array(256).fill(9));
     return merge.step();
   }, { either: /source|constraint/ }],
   ['GraphcutMerge: source far outside', () => {
-    const merge = new api.GraphcutMerge(16, 16);
+    const merge = new api.GraphcutMerge({ outputWidth: 16, outputHeight: 16 });
     merge.addSource(ex(), -(2 ** 31), 2 ** 31 - 1);
     merge.addSource(ex(), 1e10, NaN);
     for (let i = 0; i < 4 && !merge.done; i++) merge.step();
     return merge.renderInto(rgba(16, 16));
   }, { either: /source|position|outside/ }],
   ['GraphcutMerge: nine sources', () => {
-    const merge = new api.GraphcutMerge(16, 16);
+    const merge = new api.GraphcutMerge({ outputWidth: 16, outputHeight: 16 });
     for (let i = 0; i < 9; i++) merge.addSource(ex(8), i, i);
   }, 'at most 8 sources'],
-  ['GraphcutMerge: render into short', () => new api.GraphcutMerge(16, 16).renderInto(rgba(2, 2)), 'target pixel array'],
+  ['GraphcutMerge: render into short', () => new api.GraphcutMerge({ outputWidth: 16, outputHeight: 16 }).renderInto(rgba(2, 2)), 'target pixel array'],
   // VideoClip / VideoTextures views.
   ['VideoClip: short frames', () => api.VideoClip.fromFrames(8, 8, 4, new Uint8Array(8 * 8 * 4 * 3)), /length|expected/],
   ['VideoClip: zero frames', () => api.VideoClip.fromFrames(8, 8, 0, new Uint8Array(0)), /frame|size/],
@@ -121,8 +121,8 @@ export const BAD_CALLS = [
   // Found by the fuzz target `options`: the working-set estimate overflowed.
   ['VideoTextures: extend to 65536^3', () => new api.VideoTextures(tinyClip(), { mode: 'extend', fixedFrames: 0, outputWidth: 65536, outputHeight: 65536, outputFrames: 65536 }), 'output'],
   ['VideoTextures: extend to 65536x65536x2', () => new api.VideoTextures(tinyClip(), { mode: 'extend', fixedFrames: 0, outputWidth: 65536, outputHeight: 65536, outputFrames: 2 }), 'output'],
-  ['VideoTextures: frameInto past the end', () => new api.VideoTextures(tinyClip(), {}).frameInto(1000, new Uint8Array(12 * 12 * 4)), /frame/],
-  ['VideoTextures: frameInto short', () => new api.VideoTextures(tinyClip(), {}).frameInto(0, new Uint8Array(3)), /length|expected/],
+  ['VideoTextures: renderFrameInto past the end', () => new api.VideoTextures(tinyClip(), {}).renderFrameInto(1000, new Uint8Array(12 * 12 * 4)), /frame/],
+  ['VideoTextures: renderFrameInto short', () => new api.VideoTextures(tinyClip(), {}).renderFrameInto(0, new Uint8Array(3)), /length|expected/],
   ['VideoTextures: sliceXt past the bottom', () => new api.VideoTextures(tinyClip(), {}).sliceXt(1000), /row|y/],
   ['VideoTextures: seams past the end', () => new api.VideoTextures(tinyClip(), {}).seams(2 ** 32 - 1), /frame/],
   // Texture design.
@@ -160,7 +160,7 @@ export const BAD_CALLS = [
     for (let i = 0; i < 17; i++) d.addLayer(ex(8), undefined);
   }, 'at most 16 layers'],
   ['LayerDesign: toExemplar before a step', () => new api.LayerDesign({ outputWidth: 16, outputHeight: 16, patchSize: 8 }).toExemplar(), 'has not stepped'],
-  ['TileableSession: result before done', () => new api.TileableSession(ex(), {}).result(), 'not done'],
+  ['TileableTexture: result before done', () => new api.TileableTexture(ex(), {}).result(), 'not done'],
   ['makeTileable: overlap larger than the image', () => api.makeTileable(ex(), { overlapX: 40 }), /overlap/],
   ['makeTileable: 1x1', () => api.makeTileable(api.Exemplar.fromRgba(new Uint8Array(4), 1, 1), {}), { either: /size|overlap|small/ }],
   // Feature-guided synthesis.
@@ -206,7 +206,7 @@ export const BAD_CALLS = [
   ['setConstraints: lambda -1', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).setConstraints(new Uint8Array(16 * 16 * 4), -1), 'lambda'],
   ['setConstraints: lambda 1e300', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).setConstraints(new Uint8Array(16 * 16 * 4), 1e300), 'lambda'],
   ['setConstraints: lambda as a string', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).setConstraints(new Uint8Array(16 * 16 * 4), '1'), { either: 'lambda' }],
-  ['renderOffsetMap: short', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).renderOffsetMap(new Uint8ClampedArray(4)), /target pixel array|step/],
+  ['renderOffsetMapInto: short', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).renderOffsetMapInto(new Uint8ClampedArray(4)), /target pixel array|step/],
   ['FlowAnimation.flowField: t huge', () => new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] }).flowField(2 ** 32 - 1), { either: 'flow' }],
   ['FlowAnimation.renderNaiveInto: short', () => new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] }).renderNaiveInto(new Uint8ClampedArray(1)), 'target pixel array'],
   // Step anatomy of flow animation and placement anatomy of video (issue 16).
@@ -238,13 +238,13 @@ export const BAD_CALLS = [
     video.placementCosts();
   }, 'null pointer passed to rust'],
   ['GraphcutMerge.placementGraph: before setAnatomy is null', () => {
-    const merge = new api.GraphcutMerge(16, 8);
+    const merge = new api.GraphcutMerge({ outputWidth: 16, outputHeight: 8 });
     merge.addSource(ex(), 0, 0);
     merge.step();
     if (merge.placementGraph() !== null) throw new Error('recorded without setAnatomy');
   }, OK],
   ['GraphcutMerge.placementGraph: on a freed merge', () => {
-    const merge = new api.GraphcutMerge(16, 8);
+    const merge = new api.GraphcutMerge({ outputWidth: 16, outputHeight: 8 });
     merge.free();
     merge.placementGraph();
   }, 'null pointer passed to rust'],

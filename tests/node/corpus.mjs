@@ -106,8 +106,8 @@ function methodRows(kind, spec) {
   for (const name of names) {
     rows.push([`${kind}.${name}() with no arguments`, () => spec.make({})[name](), 'no-trap']);
     if (!/^render|Into$/.test(name)) continue;
-    // frameInto, seamsInto and sliceXtInto take a frame or row first.
-    const call = (s, buffer) => (/^(frame|seams|sliceXt)Into$/.test(name) ? s[name](0, buffer) : s[name](buffer));
+    // renderFrameInto, renderSeamsInto and renderSliceXtInto take a frame or row first.
+    const call = (s, buffer) => (kind === 'VideoTextures' && /^render(Frame|Seams|SliceXt)Into$/.test(name) ? s[name](0, buffer) : s[name](buffer));
     rows.push([`${kind}.${name} into a short buffer`, () => call(spec.make({}), new Uint8ClampedArray(3)), /target pixel array|length/]);
     rows.push([`${kind}.${name} into null`, () => call(spec.make({}), null), 'target']);
   }

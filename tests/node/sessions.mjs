@@ -57,10 +57,10 @@ export const SESSIONS = {
     options: {
       outputWidth: SIZE, outputHeight: SIZE, frames: COUNT, lambda: REAL, frameSizes: COUNTS,
       frameIterations: COUNT, seed: SEED, search: enumOf('patchmatch', 'kmeans-tree', 'exact'), r: REAL,
-      tileable: BOOL, histogramMatching: REAL, memoryBudgetMiB: BUDGET,
+      tileable: BOOL, histogramMatching: REAL, subPixel: BOOL, memoryBudgetMiB: BUDGET,
       flow: special([
         ['vortex', 'flow'], [{}, 'flow.type'], [{ type: 'nope' }, 'flow.type'], [{ type: 'vortex', bogus: 1 }, 'bogus'],
-        [{ type: 'vortex', strength: NaN }, 'strength'], [{ type: 'sink', centerX: '0.5' }, 'centerX'],
+        [{ type: 'vortex', strength: NaN }, 'strength'], [{ type: 'sink', centreX: '0.5' }, 'centreX'],
         [{ components: 3 }, 'flow.components'], [{ components: [{ type: 'shear' }, 7] }, 'options'],
         [{ components: [] }, { either: 'flow' }], [{ type: 'vortex', strength: 1e30 }, { either: 'strength' }],
         [{ type: 'vortex', period: 0 }, { either: 'period' }], [{ type: 'translation', angle: -1e300 }, { either: 'angle' }],
@@ -87,8 +87,8 @@ export const SESSIONS = {
       refinementPatches: COUNT, gradientCost: BOOL, memoryBudgetMiB: BUDGET,
     },
   },
-  TileableSession: {
-    make: (o, input = ex()) => new api.TileableSession(input, o),
+  TileableTexture: {
+    make: (o, input = ex()) => new api.TileableTexture(input, o),
     options: { overlapX: COUNT, overlapY: COUNT, memoryBudgetMiB: BUDGET },
   },
   TextureBrush: {
@@ -129,18 +129,16 @@ export const SESSIONS = {
       ]),
     },
   },
-  // Positional arguments only (its bad values are rows of bad_calls.mjs): `noOptions`.
   GraphcutMerge: {
-    noOptions: true,
     make: (o, input) => {
-      const merge = new api.GraphcutMerge(24, 24, true);
+      const merge = new api.GraphcutMerge(over({ outputWidth: 24, outputHeight: 24, gradientCost: true }, o));
       const source = input ?? ex();
       merge.addSource(source, 0, 0);
       merge.addSource(source, 10, 6);
       if (!input) source.free();
       return merge;
     },
-    options: {},
+    options: { outputWidth: SIZE, outputHeight: SIZE, gradientCost: BOOL },
   },
   // One-call functions that take an options object: the same corpus applies.
   makeTileable: {

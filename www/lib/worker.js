@@ -3,7 +3,7 @@
 // creates its session with `remoteSession(kind, args, spec)` and gets a MirrorSession: `await
 // session.step()`, then the views named in `spec` (rendered in the worker, sent with the step)
 // are read synchronously by the usual drawing code: session.renderInto(buffer),
-// session.view('renderSeams', buffer), session.result('field'), session.getter('constraintEnergy').
+// session.view('renderSeamsInto', buffer), session.result('field'), session.getter('constraintEnergy').
 import { createWorker } from '../pkg/worker.js';
 
 let worker = null;

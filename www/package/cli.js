@@ -123,7 +123,7 @@ function progressOf(kind, session, options) {
       return 0.8 + (0.2 * (event.patchesPlaced - placedWhenCovered)) / (options.refinementPatches ?? 24);
     }
     if (kind === 'FlowAnimation') return (event.frame ?? 0) / (session.frames || 1);
-    if (kind === 'FeatureSynthesis') return (event.patch + 1) / (event.patches || 1);
+    if (kind === 'FeatureSynthesis') return event.patchesPlaced / (event.patchesPlanned || 1);
     if (kind === 'TextureOptimization') return Math.min(0.99, ((event.level ?? 0) + (event.iteration ?? 0) / 6) / (event.levelCount || 1));
     return 0;
   };

@@ -129,7 +129,7 @@ export class WorkerSession {
     return this.worker.request({ type: 'call', session: this.id, method, args: wire }, { transfer });
   }
 
-  /** A rendered view (renderInto, renderOffsetMap, renderSeams, renderSeamCost, renderLabels, renderNaiveInto, ...). */
+  /** A rendered view (renderInto, renderOffsetMapInto, renderSeamsInto, renderSeamCostInto, renderLabelsInto, renderNaiveInto, ...). */
   async render(method = 'renderInto', width, height) {
     return imageOf(await this.worker.request({ type: 'render', session: this.id, method, width, height }));
   }
@@ -158,7 +158,7 @@ export class WorkerSession {
 /**
  * The view of a worker session that drawing code written for a local session can use unchanged:
  * `await mirror.step()` runs a step in the worker and brings back, in the same reply, the views
- * (`renderInto`, `renderOffsetMap`, `renderSeams`, ...: rendered in the worker, transferred), the
+ * (`renderInto`, `renderOffsetMapInto`, `renderSeamsInto`, ...: rendered in the worker, transferred), the
  * method results (`energyHistory`, `field`, `schedule`, ...) and the getters the spec names; the
  * mirror then answers `renderInto(buffer)`, `field()`, `done`, ... synchronously from those copies.
  * `spec`: { views, calls, getters } wanted after every step (a function returning them is asked
@@ -200,7 +200,7 @@ export class MirrorSession {
     return this.remote.call(method, ...args);
   }
 
-  /** Whether `view` (e.g. 'renderOffsetMap') has been fetched. */
+  /** Whether `view` (e.g. 'renderOffsetMapInto') has been fetched. */
   has(view) {
     return view in this.state.views || view in this.state.calls;
   }

@@ -9,7 +9,7 @@
 //   pause                       stops a run after the current step
 //   call   { method, args }     any session method or getter (teaching views: schedule, field, ...);
 //                               args as create's: exemplars, and objects made here as { ref: id }
-//   render { method, width?, height? } -> { image, width, height } (renderInto, renderOffsetMap, renderSeams, ...)
+//   render { method, width?, height? } -> { image, width, height } (renderInto, renderOffsetMapInto, renderSeamsInto, ...)
 //   snapshot { views, calls, getters }   rendered views, method results and getters in one reply
 //     (step takes the same keys, plus finalViews / finalCalls wanted when that step finishes)
 //   quality { maxSide? }        measureQuality of the current output against the session's exemplar
@@ -77,7 +77,7 @@ export function serve(lib, { post, listen }) {
   };
   const convertArgs = (args) => args.map((a) => (isRefWire(a) ? toObject(a)
     : a && typeof a === 'object' && 'exemplar' in a ? toExemplar(a.exemplar) : a));
-  // Exemplars (also inside plain objects and arrays, e.g. TileableSession.result()) travel as
+  // Exemplars (also inside plain objects and arrays, e.g. TileableTexture.result()) travel as
   // { width, height, png }: PNG keeps the channels; Exemplar.fromBytes(png) on the other side.
   const cloneable = (value) => {
     if (value instanceof lib.Exemplar) {

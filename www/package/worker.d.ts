@@ -1,6 +1,6 @@
 // `texsynth-wasm/worker`: sessions in a Web Worker (browsers) or a worker_threads Worker (Node).
 import type {
-  Exemplar, FlowAnimationEvent, FlowAnimationOptions, GraphcutMergeEvent, GraphcutTexturesEvent,
+  Exemplar, FlowAnimationEvent, FlowAnimationOptions, GraphcutMergeEvent, GraphcutMergeOptions, GraphcutTexturesEvent,
   GraphcutTexturesOptions, LayerDesignEvent, LayerDesignOptions, TextureBrushOptions,
   TextureOptimizationEvent, TextureOptimizationOptions, TileableEvent, TileableOptions,
   FeatureSynthesisEvent, FeatureSynthesisOptions, VideoTexturesEvent, VideoTexturesOptions,
@@ -18,8 +18,8 @@ export interface SessionKinds {
   TextureOptimization: { args: [ExemplarInput, TextureOptimizationOptions?]; event: TextureOptimizationEvent };
   GraphcutTextures: { args: [ExemplarInput, GraphcutTexturesOptions?]; event: GraphcutTexturesEvent };
   FlowAnimation: { args: [ExemplarInput, FlowAnimationOptions?]; event: FlowAnimationEvent };
-  TileableSession: { args: [ExemplarInput, TileableOptions?]; event: TileableEvent };
-  GraphcutMerge: { args: [number, number, (boolean | null)?]; event: GraphcutMergeEvent };
+  TileableTexture: { args: [ExemplarInput, TileableOptions?]; event: TileableEvent };
+  GraphcutMerge: { args: [GraphcutMergeOptions?]; event: GraphcutMergeEvent };
   LayerDesign: { args: [LayerDesignOptions?]; event: LayerDesignEvent };
   TextureBrush: { args: [ExemplarInput, TextureBrushOptions?]; event: never };
   FeatureSynthesis: { args: [ExemplarInput, FeatureSynthesisOptions?]; event: FeatureSynthesisEvent };
@@ -35,7 +35,7 @@ export type SessionKind = keyof SessionKinds;
 export interface WorkerImage { data: Uint8ClampedArray; width: number; height: number }
 
 /** A view method of the session that writes RGBA into a buffer. */
-export type RenderMethod = 'renderInto' | 'renderOffsetMap' | 'renderSeams' | 'renderSeamCost' | 'renderLabels' | 'renderNaiveInto' | 'renderSources' | 'renderFeatures';
+export type RenderMethod = 'renderInto' | 'renderOffsetMapInto' | 'renderSeamsInto' | 'renderSeamCostInto' | 'renderLabelsInto' | 'renderNaiveInto' | 'renderSourcesInto' | 'renderFeaturesInto';
 
 export interface WorkerRunOptions<E> {
   /** Aborting pauses the session after the current step; `run` rejects with the signal's reason. */

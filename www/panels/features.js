@@ -70,7 +70,7 @@ export function createPanel(ui) {
   const featuresKey = () => (ui.$('fg-placement').value === 'graphcut' ? 'fg-hybrid' : 'fg-features');
   const anatomyOn = () => ui.$('fg-anatomy-on').checked && ui.$('fg-placement').value === 'graphcut';
   const FEATURE_VIEWS = () => ({
-    views: ['renderInto', 'renderFeatures'],
+    views: ['renderInto', 'renderFeaturesInto'],
     calls: anatomyOn() ? ['placement', 'placementCosts', 'placementGraph'] : ['placement'],
   });
 
@@ -369,17 +369,17 @@ export function createPanel(ui) {
         zoomCanvas();
         drawPlacement();
         // The transferred view itself (no copy of an output-sized buffer every step).
-        const curves = synthesis.imageData('renderFeatures')?.data ?? (() => {
+        const curves = synthesis.imageData('renderFeaturesInto')?.data ?? (() => {
           const copy = new Uint8ClampedArray(synthesis.width * synthesis.height * 4);
-          synthesis.view('renderFeatures', copy);
+          synthesis.view('renderFeaturesInto', copy);
           return copy;
         })();
         drawCurves(ui.$('fg-map'), curves, synthesis.width, synthesis.height, shownSide(ui.$('fg-map')));
         const how = event.colourOnly ? 'colour only (no oriented features to match)'
           : `feature cost ${event.featureCost.toFixed(2)} · colour ${event.colourCost.toExponential(2)}`;
-        ui.$('fg-readout').textContent = `patch ${event.patch + 1}/${event.patches} from (${event.sourceX}, ${event.sourceY}) · ` +
+        ui.$('fg-readout').textContent = `patch ${event.patchesPlaced}/${event.patchesPlanned} from (${event.sourceX}, ${event.sourceY}) · ` +
           `${event.contextFeatures} context features · ${warpText(event)} · ${how}`;
-        document.body.dataset.featurePatches = String(event.patch + 1);
+        document.body.dataset.featurePatches = String(event.patchesPlaced);
         if (anatomyOn()) showPlacementAnatomy(ui.$, synthesis.result('placementCosts'), synthesis.result('placementGraph'));
         if (event.featuresDone) {
           const quality = ui.$('fg-quality');

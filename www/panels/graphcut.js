@@ -43,7 +43,7 @@ const SIDE_HTML = `
 
 // The session runs in the page's worker; these views come back with every step (the overlays only
 // while shown, all of them with the last step so that toggles after the run draw at once).
-const ALL_VIEWS = ['renderInto', 'renderSeams', 'renderSeamCost', 'renderLabels'];
+const ALL_VIEWS = ['renderInto', 'renderSeamsInto', 'renderSeamCostInto', 'renderLabelsInto'];
 
 export function createPanel(ui) {
   let session = null;
@@ -78,12 +78,12 @@ export function createPanel(ui) {
       canvas.width = width;
       canvas.height = height;
       canvas.getContext('2d').clearRect(0, 0, width, height);
-      drawOverlay(canvas, width, height, view('renderLabels'));
+      drawOverlay(canvas, width, height, view('renderLabelsInto'));
     } else {
       drawInto(canvas, session);
     }
-    if (ui.$('gc-heat').checked) drawOverlay(canvas, width, height, view('renderSeamCost'), 0.85);
-    if (ui.$('gc-seams').checked) drawOverlay(canvas, width, height, view('renderSeams'));
+    if (ui.$('gc-heat').checked) drawOverlay(canvas, width, height, view('renderSeamCostInto'), 0.85);
+    if (ui.$('gc-seams').checked) drawOverlay(canvas, width, height, view('renderSeamsInto'));
     if (lastEvent?.patch && !lastEvent.done) {
       strokeRect(canvas, lastEvent.rect, width, height, '#e0a458');
       strokeRect(canvas, lastEvent.region, width, height, '#7fd1ff', [3, 2]);
@@ -94,9 +94,9 @@ export function createPanel(ui) {
 
   function wanted() {
     const views = ['renderInto'];
-    if (ui.$('gc-seams').checked) views.push('renderSeams');
-    if (ui.$('gc-heat').checked) views.push('renderSeamCost');
-    if (ui.$('gc-labels').checked) views.push('renderLabels');
+    if (ui.$('gc-seams').checked) views.push('renderSeamsInto');
+    if (ui.$('gc-heat').checked) views.push('renderSeamCostInto');
+    if (ui.$('gc-labels').checked) views.push('renderLabelsInto');
     const calls = anatomyOn() ? ['placementCosts', 'placementGraph'] : [];
     return { views, calls, finalViews: ALL_VIEWS, finalCalls: calls };
   }

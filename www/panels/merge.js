@@ -72,8 +72,8 @@ export function createPanel(ui) {
     computeLayout();
     drop();
     const current = (pending = (async () => {
-      const wanted = () => ({ views: ['renderInto', 'renderSeams'], calls: anatomyOn() ? ['placementGraph'] : [] });
-      const made = await remoteSession('GraphcutMerge', [layout.width, layout.height, true], wanted);
+      const wanted = () => ({ views: ['renderInto', 'renderSeamsInto'], calls: anatomyOn() ? ['placementGraph'] : [] });
+      const made = await remoteSession('GraphcutMerge', [{ outputWidth: layout.width, outputHeight: layout.height, gradientCost: true }], wanted);
       if (anatomyOn()) await made.send('setAnatomy', true);
       await made.send('addSource', { exemplar: ui.exemplar() }, 0, 0);
       await made.send('addSource', { exemplar: second }, layout.offset, 0);
@@ -95,7 +95,7 @@ export function createPanel(ui) {
     ctx.clearRect(0, 0, layout.width, layout.height);
     if (merge && merge.done) {
       drawInto(canvas, merge);
-      drawOverlay(canvas, layout.width, layout.height, (b) => merge.view('renderSeams', b));
+      drawOverlay(canvas, layout.width, layout.height, (b) => merge.view('renderSeamsInto', b));
     } else {
       // Preview: both sources where they are placed, the second half-transparent.
       for (const [source, x, alpha] of [[ui.exemplar(), 0, 1], [second, layout.offset, 0.55]]) {

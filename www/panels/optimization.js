@@ -76,10 +76,10 @@ export function createPanel(ui) {
     const teaching = ui.$('to-teaching').checked;
     const field = teaching || anatomyOn();
     return {
-      views: teaching ? ['renderInto', 'renderOffsetMap'] : ['renderInto'],
+      views: teaching ? ['renderInto', 'renderOffsetMapInto'] : ['renderInto'],
       calls: field ? ['energyHistory', 'historyLevels', 'field'] : ['energyHistory', 'historyLevels'],
       getters: ['constraintEnergy'],
-      finalViews: ['renderInto', 'renderOffsetMap'],
+      finalViews: ['renderInto', 'renderOffsetMapInto'],
       finalCalls: ['energyHistory', 'historyLevels', 'field'],
     };
   }
@@ -110,7 +110,7 @@ export function createPanel(ui) {
   /** The teaching view toggled on mid-run: fetch it, then draw. */
   async function redraw() {
     if (session && ui.$('to-teaching').checked && !session.has('field')) {
-      await session.refresh({ views: ['renderOffsetMap'], calls: ['field'] });
+      await session.refresh({ views: ['renderOffsetMapInto'], calls: ['field'] });
     }
     draw();
   }
@@ -130,7 +130,7 @@ export function createPanel(ui) {
       // The offset map, scaled up without smoothing so the grid can be drawn finer than a pixel.
       offsetImage = offsetImage?.width === session.width && offsetImage.height === session.height
         ? offsetImage : new ImageData(session.width, session.height);
-      session.view('renderOffsetMap', offsetImage.data);
+      session.view('renderOffsetMapInto', offsetImage.data);
       const zoom = Math.max(1, Math.floor(512 / Math.max(session.width, session.height)));
       const source = document.createElement('canvas');
       source.width = session.width;

@@ -115,7 +115,7 @@ export function createPanel(ui) {
       ? ` · graph: frame ${graph.frame + 1} of the patch’s frames ${graph.firstFrame + 1}–${graph.firstFrame + graph.frames}, the one with the most overlap`
       : '';
     ui.$('vt-anatomy-slice').textContent = `${where}${frame}.`;
-    document.body.dataset.videoAnatomyPatches = String(event.patch + 1);
+    document.body.dataset.videoAnatomyPatches = String(event.patchesPlaced);
   }
 
   const size = () => Math.min(256, Math.max(16, Math.round(Number(ui.$('vt-size').value) || 64)));
@@ -324,16 +324,18 @@ export function createPanel(ui) {
     },
     async draw(event) {
       const frames = session.getter('frames');
-      const t = Math.min(frames - 1, Math.max(0, event.tt + Math.floor(clip.frames / 2)));
+      const p = event.patch;
+      const t = Math.min(frames - 1, Math.max(0, (p?.offsetT ?? 0) + Math.floor(clip.frames / 2)));
       ui.$('vt-row').max = String(session.height - 1);
       ui.$('vt-readout').textContent =
-        `patch ${event.patch + 1} at (x ${event.tx}, y ${event.ty}, t ${event.tt}) · ${event.voxelsTaken} voxels taken · ` +
+        (p ? `patch ${p.index + 1} at (x ${p.offsetX}, y ${p.offsetY}, t ${p.offsetT})` : `${event.patchesPlaced} patches`) +
+        ` · ${event.pixelsTaken} voxels taken · ` +
         `cut cost ${event.cutCost.toPrecision(3)}${event.covered ? ' · refining' : ''} · showing frame ${t + 1}/${frames}`;
       await drawFrame(t);
       await drawSlice();
       drawAnatomy(event);
       explain(ui.$('vt-explain'), !anatomyOn() ? 'vt-start' : session.result('placementCosts') ? 'vt-place' : 'vt-place-random');
-      document.body.dataset.videoPatches = String(event.patch + 1);
+      document.body.dataset.videoPatches = String(event.patchesPlaced);
       if (event.done) {
         await drawLoopPoint(event.loopFrame ?? -1);
         await collectOutput();

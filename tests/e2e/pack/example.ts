@@ -3,7 +3,7 @@
 import init, {
   Exemplar, FlowAnimation, GraphcutMerge, GraphcutTextures, LayerDesign, TextureBrush, TextureOptimization,
   FeatureMap, FeatureSynthesis, detectFeatures, measureBrokenFeatures, VideoClip, VideoTextures,
-  TileableSession, deformTexture, deformationSet, flowField, initSync, makeTileable, measureQuality, start, version,
+  TileableTexture, deformTexture, deformationSet, flowField, initSync, makeTileable, measureQuality, start, version,
   yieldToEventLoop,
   type FlowAnimationEvent, type GraphcutTexturesEvent, type Quality, type TextureOptimizationEvent, type TexsynthError,
 } from 'texsynth-wasm';
@@ -41,7 +41,7 @@ async function everything(): Promise<void> {
   }
   const last: TextureOptimizationEvent | null = await to.run({ signal, onEvent: (event) => event.neighbourhoodSize });
   to.renderInto(rgba);
-  to.renderOffsetMap(rgba);
+  to.renderOffsetMapInto(rgba);
 
   const map: FeatureMap = detectFeatures(ex, { features: 'ridges', threshold: 0.9 });
   map.paint(3, 4, 2, true);
@@ -51,7 +51,7 @@ async function everything(): Promise<void> {
   }
   const fe = fg.step();
   const pairs: Float32Array = fg.placement().pairs;
-  fg.renderFeatures(rgba);
+  fg.renderFeaturesInto(rgba);
   const broken: number = measureBrokenFeatures(ex, rgba, 256, 256, { features: 'edges' });
   // @ts-expect-error: not a feature kind
   detectFeatures(ex, { features: 'corners' });
@@ -60,8 +60,8 @@ async function everything(): Promise<void> {
   for (const event of video) {
     const loopFrame: number = event.loopFrame;
   }
-  video.frameInto(0, new Uint8Array(video.width * video.height * 4));
-  video.sliceXtInto(0, new Uint8Array(video.width * video.frames * 4));
+  video.renderFrameInto(0, new Uint8Array(video.width * video.height * 4));
+  video.renderSliceXtInto(0, new Uint8Array(video.width * video.frames * 4));
   const frame: Uint8Array = video.frame(0);
   const slice: Uint8Array = video.sliceXt(0);
   video.seams(0);
@@ -84,16 +84,16 @@ async function everything(): Promise<void> {
   const ge: GraphcutTexturesEvent = gc.step();
   const covered: boolean = ge.covered;
   if (ge.rect) ge.rect.width;
-  gc.renderSeams(rgba); gc.renderSeamCost(rgba); gc.renderLabels(rgba); gc.renderInto(rgba);
+  gc.renderSeamsInto(rgba); gc.renderSeamCostInto(rgba); gc.renderLabelsInto(rgba); gc.renderInto(rgba);
   const region = gc.errorRegion();
   const names: string[] = gc.sources();
   for (const event of gc) event.patchesPlaced;
 
-  const merge = new GraphcutMerge(200, 128);
+  const merge = new GraphcutMerge({ outputWidth: 200, outputHeight: 128 });
   merge.addSource(ex, 0, 0);
   merge.setConstraints(new Uint8Array(200 * 128));
   for (const event of merge) { const s: number | null = event.source; }
-  merge.renderInto(rgba); merge.renderSeams(rgba); merge.renderSources(rgba);
+  merge.renderInto(rgba); merge.renderSeamsInto(rgba); merge.renderSourcesInto(rgba);
 
   const anim = new FlowAnimation(ex, { frames: 4, flow: { components: [{ type: 'vortex', strength: 2 }, { type: 'sink' }] } });
   await anim.run({ onEvent: (event: FlowAnimationEvent) => event.frameFinished && anim.renderInto(rgba) });
@@ -108,7 +108,7 @@ async function everything(): Promise<void> {
   const label: string = set[0].label;
   const tiled = makeTileable(ex, { overlapX: 8 });
   const cut: number = tiled.cutX + tiled.seamCostY;
-  const ts = new TileableSession(ex, { overlapY: 8 });
+  const ts = new TileableTexture(ex, { overlapY: 8 });
   for (const event of ts) { const axis: 'x' | 'y' = event.axis; }
   ts.renderInto(rgba);
   ts.result().exemplar.width;
@@ -116,7 +116,7 @@ async function everything(): Promise<void> {
   const brush = new TextureBrush(ex, { nu: 1000, poisson: false });
   const stroke = brush.stroke(ex2, new Uint8Array(ex2.width * ex2.height), 3, 4);
   stroke.taken;
-  brush.renderLabels(rgba); brush.renderInto(rgba);
+  brush.renderLabelsInto(rgba); brush.renderInto(rgba);
   const undone: boolean = brush.undo();
   brush.toExemplar().free();
   brush.undoDepth;
@@ -138,7 +138,7 @@ async function everything(): Promise<void> {
   const stepped = await remote.step();
   const energy: number = stepped.event.energy;
   await remote.run({ signal, every: 2, onEvent: (event, image: WorkerImage | null) => { event.iteration; image?.data; } });
-  const view: WorkerImage = await remote.render('renderOffsetMap');
+  const view: WorkerImage = await remote.render('renderOffsetMapInto');
   await remote.call('schedule');
   await remote.free();
   worker.terminate();
@@ -163,7 +163,7 @@ type Covers<Generated, Typed extends Generated> = Typed;
 type _Coverage = [
   Covers<Generated.Exemplar, Exemplar>, Covers<Generated.TextureOptimization, TextureOptimization>,
   Covers<Generated.GraphcutTextures, GraphcutTextures>, Covers<Generated.GraphcutMerge, GraphcutMerge>,
-  Covers<Generated.FlowAnimation, FlowAnimation>, Covers<Generated.TileableSession, TileableSession>,
+  Covers<Generated.FlowAnimation, FlowAnimation>, Covers<Generated.TileableTexture, TileableTexture>,
   Covers<Generated.TextureBrush, TextureBrush>, Covers<Generated.LayerDesign, LayerDesign>,
   Covers<Generated.FeatureSynthesis, FeatureSynthesis>, Covers<Generated.FeatureMap, FeatureMap>,
   Covers<Generated.VideoClip, VideoClip>, Covers<Generated.VideoTextures, VideoTextures>,

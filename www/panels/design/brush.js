@@ -44,7 +44,7 @@ export function createStage({ ui, gallery, readout }) {
     const b = ensureBrush();
     drawInto(ui.outputCanvas, b);
     if (showLabels && ui.$('db-labels').checked) {
-      drawOverlay(ui.outputCanvas, b.width, b.height, (buffer) => b.renderLabels(buffer));
+      drawOverlay(ui.outputCanvas, b.width, b.height, (buffer) => b.renderLabelsInto(buffer));
     }
     ui.$('db-undo').disabled = b.undoDepth === 0;
   }
@@ -86,7 +86,7 @@ export function createStage({ ui, gallery, readout }) {
     try {
       const r = b.stroke(ref, mask, Math.round(x - sx / n), Math.round(y - sy / n));
       const ms = performance.now() - start;
-      readout(`stroke: ${r.taken} pixels took the reference in a ${r.width}×${r.height} window · ` +
+      readout(`stroke: ${r.pixelsTaken} pixels took the reference in a ${r.width}×${r.height} window · ` +
         `E(L) ${r.energy.toFixed(2)} · Poisson ${r.poissonIterations} iterations · ${ms.toFixed(0)} ms`);
       document.body.dataset.strokes = String(b.undoDepth);
       mask.fill(0);

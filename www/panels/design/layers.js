@@ -95,7 +95,7 @@ export function createStage({ ui, gallery, readout }) {
     onStep(event) {
       drawInto(ui.outputCanvas, design);
       const ms = performance.now() - started;
-      readout(`row ${event.row + 1}/${event.rows} · ${event.patches}/${event.totalPatches} patches · ` +
+      readout(`row ${event.row + 1}/${event.rows} · ${event.rowPatches} patches in the row, ${event.patchesPlaced} in all · ` +
         `${(event.pixelsCompared / 1e6).toFixed(2)} M pixel differences · boundary SSD ${event.totalSsd.toFixed(1)} · ${ms.toFixed(0)} ms`);
       if (event.done) {
         // The worker sends the design as PNG (its channels kept) for the gallery.

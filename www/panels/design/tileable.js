@@ -49,7 +49,7 @@ export function createStage({ ui, gallery, readout }) {
     const overlap = Number(ui.$('dt-overlap').value);
     const options = overlap > 0 ? { overlapX: overlap, overlapY: overlap } : undefined;
     started = performance.now();
-    return remoteSession('TileableSession', [gallery.baseItem.exemplar, options], { views: ['renderInto'], finalCalls: ['result'] });
+    return remoteSession('TileableTexture', [gallery.baseItem.exemplar, options], { views: ['renderInto'], finalCalls: ['result'] });
   }
 
   return {
