@@ -4,7 +4,7 @@
 
 use js_sys::{Array, Uint8ClampedArray};
 use texsynth::bindings::{
-    Exemplar, LayerDesign, TextureBrush, TileableSession, deform_texture, deformation_set,
+    Exemplar, LayerDesign, TextureBrush, TileableTexture, deform_texture, deformation_set,
     make_tileable,
 };
 use wasm_bindgen::{JsCast, JsValue};
@@ -96,13 +96,13 @@ fn a_brush_stroke_changes_the_base_and_undo_restores_it() {
     brush.render_into(&before).unwrap();
     let mask = disc(64, 64, 30.0, 30.0, 7.0);
     let r = brush.stroke(&reference, &mask, 4, -2).unwrap();
-    assert!(get(&r, "taken").as_f64().unwrap() >= 150.0);
+    assert!(get(&r, "pixelsTaken").as_f64().unwrap() >= 150.0);
     assert!(get(&r, "poissonIterations").as_f64().unwrap() > 0.0);
     let after = Uint8ClampedArray::new_with_length(64 * 64 * 4);
     brush.render_into(&after).unwrap();
     assert_ne!(before.to_vec(), after.to_vec());
     let labels = Uint8ClampedArray::new_with_length(64 * 64 * 4);
-    brush.render_labels(&labels).unwrap();
+    brush.render_labels_into(&labels).unwrap();
     assert!(
         labels.to_vec().chunks(4).any(|p| p == [255, 40, 40, 255]),
         "a seam is drawn"
@@ -209,13 +209,13 @@ fn make_tileable_returns_a_seamless_smaller_texture() {
     );
     let tiny = Exemplar::from_rgba(&[0; 8 * 8 * 4], 8, 8).unwrap();
     assert!(error_message(make_tileable(&tiny, JsValue::UNDEFINED)).contains("at least 16"));
-    assert!(error_message(TileableSession::new(&tiny, JsValue::UNDEFINED)).contains("at least 16"));
+    assert!(error_message(TileableTexture::new(&tiny, JsValue::UNDEFINED)).contains("at least 16"));
 }
 
 #[wasm_bindgen_test]
 fn a_tileable_session_makes_one_stitch_per_step() {
     let ex = Exemplar::from_bytes(TILES_64).unwrap();
-    let mut s = TileableSession::new(&ex, JsValue::UNDEFINED).unwrap();
+    let mut s = TileableTexture::new(&ex, JsValue::UNDEFINED).unwrap();
     assert!(error_message(s.result()).contains("not done"));
     let first = s.step().unwrap();
     assert_eq!(get(&first, "axis").as_string().unwrap(), "x");

@@ -52,7 +52,7 @@ fn a_feature_map_is_detected_edited_and_used() {
     assert_eq!(get(&p, "size").as_f64().unwrap(), 32.0);
     let out = Uint8ClampedArray::new_with_length(96 * 96 * 4);
     s.render_into(&out).unwrap();
-    s.render_features(&out).unwrap();
+    s.render_features_into(&out).unwrap();
     s.render_into(&out).unwrap();
     let broken = measure_broken_features(&ex, &out.to_vec(), 96, 96, JsValue::UNDEFINED).unwrap();
     assert!(broken.is_finite());

@@ -38,10 +38,10 @@ fn a_graphcut_session_places_patches_until_done() {
     let target = Uint8ClampedArray::new_with_length(96 * 80 * 4);
     session.render_into(&target).unwrap();
     assert!(target.to_vec().chunks(4).all(|p| p[3] == 255));
-    session.render_seams(&target).unwrap();
+    session.render_seams_into(&target).unwrap();
     assert!(target.to_vec().chunks(4).any(|p| p[3] == 255), "some seams");
-    session.render_seam_cost(&target).unwrap();
-    session.render_labels(&target).unwrap();
+    session.render_seam_cost_into(&target).unwrap();
+    session.render_labels_into(&target).unwrap();
     assert!(!get(&session.error_region(), "width").is_undefined());
     assert_eq!(session.sources(), vec!["exemplar".to_string()]);
 }
@@ -61,7 +61,7 @@ fn graphcut_options_are_checked_by_name() {
     assert!(msg(&[("errorRegion", 500.into())]).contains("errorRegion"));
     let target = Uint8ClampedArray::new_with_length(3);
     let session = GraphcutTextures::new(&ex, JsValue::UNDEFINED).unwrap();
-    assert!(error_message(session.render_labels(&target)).contains("target pixel array"));
+    assert!(error_message(session.render_labels_into(&target)).contains("target pixel array"));
 }
 
 #[wasm_bindgen_test]
@@ -69,7 +69,7 @@ fn a_merge_honours_painted_constraints() {
     let tiles = Exemplar::from_bytes(TILES_64).unwrap();
     let sand = Exemplar::from_bytes(SAND_64).unwrap();
     let (w, h) = (100usize, 64usize);
-    let mut merge = GraphcutMerge::new(w as u32, h as u32, Some(true)).unwrap();
+    let mut merge = GraphcutMerge::new(options(&[("outputWidth", (w as u32).into()), ("outputHeight", (h as u32).into()), ("gradientCost", true.into())])).unwrap();
     assert_eq!(merge.add_source(&tiles, 0, 0).unwrap(), 0);
     assert_eq!(merge.add_source(&sand, 36, 0).unwrap(), 1);
     let mut mask = vec![0u8; w * h];
@@ -82,7 +82,7 @@ fn a_merge_honours_painted_constraints() {
         merge.step().unwrap();
     }
     let target = Uint8ClampedArray::new_with_length((w * h * 4) as u32);
-    merge.render_sources(&target).unwrap();
+    merge.render_sources_into(&target).unwrap();
     let colours = target.to_vec();
     let colour = |x: usize, y: usize| colours[(y * w + x) * 4..(y * w + x) * 4 + 3].to_vec();
     for y in 0..h {
@@ -98,9 +98,9 @@ fn a_merge_honours_painted_constraints() {
         );
     }
     merge.render_into(&target).unwrap();
-    merge.render_seams(&target).unwrap();
+    merge.render_seams_into(&target).unwrap();
     assert!(error_message(merge.set_constraints(&[0; 5])).contains("constraint mask"));
-    assert!(error_message(GraphcutMerge::new(0, 5, None)).contains("output size 0x5"));
+    assert!(error_message(GraphcutMerge::new(options(&[("outputWidth", 0.into()), ("outputHeight", 5.into())]))).contains("outputWidth"));
 }
 
 #[wasm_bindgen_test]

@@ -61,7 +61,7 @@ fn a_session_steps_renders_and_finishes() {
         .unwrap()
         .length();
     assert_eq!(matches, 2 * columns * rows);
-    session.render_offset_map(&target).unwrap();
+    session.render_offset_map_into(&target).unwrap();
     assert!(Array::from(&session.schedule().into()).length() >= 1);
 }
 
