@@ -23,7 +23,7 @@ use crate::methods::features::{
 
 const FEATURES: Opt = Opt {
     key: "features",
-    kind: Kind::Choice(&["ridges", "edges", "both"]),
+    kind: Kind::Choice(&["edges", "ridges", "both"]),
     default: Some("'ridges'"),
     doc: "Which curves make the map.",
 };

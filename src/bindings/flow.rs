@@ -228,7 +228,14 @@ fn read_component(value: &JsValue) -> JsResult<Component> {
     let kind = match js.choice("type", FlowKind::from_name) {
         Ok(Some(kind)) => kind,
         Err(_) => {
-            return Err(invalid("flow.type", format!("must be one of '{names}'")));
+            let got = js
+                .value("type")?
+                .and_then(|v| v.as_string())
+                .map_or(String::new(), |name| format!(", got '{name}'"));
+            return Err(invalid(
+                "flow.type",
+                format!("must be one of '{names}'{got}"),
+            ));
         }
         Ok(None) => {
             return Err(invalid(

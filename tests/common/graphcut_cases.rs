@@ -69,7 +69,12 @@ fn a_merge_honours_painted_constraints() {
     let tiles = Exemplar::from_bytes(TILES_64).unwrap();
     let sand = Exemplar::from_bytes(SAND_64).unwrap();
     let (w, h) = (100usize, 64usize);
-    let mut merge = GraphcutMerge::new(options(&[("outputWidth", (w as u32).into()), ("outputHeight", (h as u32).into()), ("gradientCost", true.into())])).unwrap();
+    let mut merge = GraphcutMerge::new(options(&[
+        ("outputWidth", (w as u32).into()),
+        ("outputHeight", (h as u32).into()),
+        ("gradientCost", true.into()),
+    ]))
+    .unwrap();
     assert_eq!(merge.add_source(&tiles, 0, 0).unwrap(), 0);
     assert_eq!(merge.add_source(&sand, 36, 0).unwrap(), 1);
     let mut mask = vec![0u8; w * h];
@@ -100,7 +105,13 @@ fn a_merge_honours_painted_constraints() {
     merge.render_into(&target).unwrap();
     merge.render_seams_into(&target).unwrap();
     assert!(error_message(merge.set_constraints(&[0; 5])).contains("constraint mask"));
-    assert!(error_message(GraphcutMerge::new(options(&[("outputWidth", 0.into()), ("outputHeight", 5.into())]))).contains("outputWidth"));
+    assert!(
+        error_message(GraphcutMerge::new(options(&[
+            ("outputWidth", 0.into()),
+            ("outputHeight", 5.into())
+        ])))
+        .contains("outputWidth")
+    );
 }
 
 #[wasm_bindgen_test]
