@@ -134,7 +134,9 @@ export const SESSIONS = {
       const merge = new api.GraphcutMerge(over({ outputWidth: 24, outputHeight: 24, gradientCost: true }, o));
       const source = input ?? ex();
       merge.addSource(source, 0, 0);
-      merge.addSource(source, 10, 6);
+      // The second source inside the output whatever size the corpus gives it.
+      const inside = (v, at) => (Number.isInteger(v) && v > 0 ? Math.min(at, v - 1) : at);
+      merge.addSource(source, inside(o?.outputWidth, 10), inside(o?.outputHeight, 6));
       if (!input) source.free();
       return merge;
     },
