@@ -63,7 +63,7 @@ const DEFORMATION_SCHEMA: Schema = Schema {
 };
 
 /// A range `{ from, to, step }` of `deformationSet`.
-const RANGE_SCHEMA: Schema = Schema {
+pub(crate) const RANGE_SCHEMA: Schema = Schema {
     class: "range",
     options_name: "Range",
     options: &[

@@ -210,6 +210,8 @@ fn all() -> Vec<&'static Schema> {
         &super::merge::SCHEMA,
         &super::flow::SCHEMA,
         &super::flow::COMPONENT_SCHEMA,
+        &super::design::RANGE_SCHEMA,
+        &super::design::RANGES_SCHEMA,
         &super::design::TILEABLE_SCHEMA,
         &super::design::BRUSH_SCHEMA,
         &super::design::LAYER_SCHEMA,

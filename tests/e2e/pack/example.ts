@@ -58,12 +58,13 @@ async function everything(): Promise<void> {
   const clip = VideoClip.fromFrames(8, 8, 12, new Uint8Array(8 * 8 * 4 * 12));
   const video = new VideoTextures(clip, { mode: 'extend', outputWidth: 16, fixedFrames: 2, placement: 'matching' });
   for (const event of video) {
-    const loopFrame: number = event.loopFrame;
+    const loopFrame: number | null = event.loopFrame;
+    const offsetT: number | undefined = event.patch?.offsetT;
   }
-  video.renderFrameInto(0, new Uint8Array(video.width * video.height * 4));
-  video.renderSliceXtInto(0, new Uint8Array(video.width * video.frames * 4));
-  const frame: Uint8Array = video.frame(0);
-  const slice: Uint8Array = video.sliceXt(0);
+  video.renderFrameInto(0, new Uint8ClampedArray(video.width * video.height * 4));
+  video.renderSliceXtInto(0, new Uint8ClampedArray(video.width * video.frames * 4));
+  const frame: Uint8ClampedArray = video.frame(0);
+  const slice: Uint8ClampedArray = video.sliceXt(0);
   video.seams(0);
   video.renderInto(new Uint8ClampedArray(video.width * video.height * 4));
   // @ts-expect-error: not a video mode
@@ -115,7 +116,7 @@ async function everything(): Promise<void> {
 
   const brush = new TextureBrush(ex, { nu: 1000, poisson: false });
   const stroke = brush.stroke(ex2, new Uint8Array(ex2.width * ex2.height), 3, 4);
-  stroke.taken;
+  stroke.pixelsTaken;
   brush.renderLabelsInto(rgba); brush.renderInto(rgba);
   const undone: boolean = brush.undo();
   brush.toExemplar().free();
