@@ -84,15 +84,15 @@ impl JsSession for GraphcutMerge {
         let anatomy = self.anatomy;
         let merge = self.merge.as_mut().expect("built above");
         merge.set_anatomy(anatomy);
-        let result = merge.step()?;
-        let done = merge.is_done();
-        let (source, cut) =
-            result.map_or((JsValue::NULL, 0.0), |(k, cut)| ((k as u32).into(), cut));
+        let e = merge.step()?;
         SCHEMA.event(&[
-            ("kind", if done { "done" } else { "merged" }.into()),
-            ("done", done.into()),
-            ("source", source),
-            ("cutCost", cut.into()),
+            ("kind", if e.done { "done" } else { "merged" }.into()),
+            ("done", e.done.into()),
+            (
+                "source",
+                e.source.map_or(JsValue::NULL, |k| (k as u32).into()),
+            ),
+            ("cutCost", e.cut_cost.into()),
         ])
     }
 

@@ -3,7 +3,7 @@
 //! sigma_d = 2 pixels, similarity sigma_r = 10/256 of the grey range.
 
 /// Filters a `width` x `height` grey image (values in 0..1). The window reaches 2 sigma_d; the
-/// spatial weights are tabulated once, the range weight is [`neg_exp`].
+/// spatial weights are tabulated once, the range weight is `neg_exp`.
 #[must_use]
 pub fn bilateral(
     grey: &[f32],

@@ -51,7 +51,7 @@ pub struct FeatureOptions {
     /// one. Default: 1.
     pub seam_feature_weight: f32,
     /// Patch side (scan placement; graph-cut placement uses the whole exemplar, and the
-    /// feature-cost band is as wide as the scan overlap). Default (`None`): [`DEFAULT_PATCH`],
+    /// feature-cost band is as wide as the scan overlap). Default (`None`): `DEFAULT_PATCH`,
     /// or the exemplar's shorter side when that is smaller, so that an exemplar of 16 to 63
     /// pixels works without options, as it does in graph cut; see [`FeatureOptions::fitted`].
     pub patch_size: Option<usize>,
@@ -89,15 +89,15 @@ pub const DEFAULT_PATCH: usize = 64;
 pub const MIN_PATCH: usize = 16;
 
 impl FeatureOptions {
-    /// The patch side: the option, or [`DEFAULT_PATCH`] before [`FeatureOptions::fitted`].
+    /// The patch side: the option, or `DEFAULT_PATCH` before [`FeatureOptions::fitted`].
     #[must_use]
     pub fn patch(&self) -> usize {
         self.patch_size.unwrap_or(DEFAULT_PATCH)
     }
 
     /// These options with the default patch side fitted to a `ew` x `ew` exemplar: the
-    /// exemplar's shorter side when it is under [`DEFAULT_PATCH`]. A patch side the caller chose
-    /// is kept (and [`FeatureOptions::validate`] refuses it if it does not fit).
+    /// exemplar's shorter side when it is under `DEFAULT_PATCH`. A patch side the caller chose
+    /// is kept (and `FeatureOptions::validate` refuses it if it does not fit).
     #[must_use]
     pub fn fitted(mut self, ew: usize, eh: usize) -> Self {
         if self.patch_size.is_none() {

@@ -11,6 +11,17 @@ use super::synthesis::Synthesis;
 use crate::core::{Error, Image, Result, Rng};
 use crate::solvers::fft_ssd::SsdSearch;
 
+/// What one step of a merge did.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MergeEvent {
+    /// The source laid down by this step; `None` when every source was already down.
+    pub source: Option<usize>,
+    /// Cost of this step's min cut (0 when no source was laid down).
+    pub cut_cost: f64,
+    /// Whether every source is down.
+    pub done: bool,
+}
+
 /// A merge in progress.
 pub struct Merge {
     synthesis: Synthesis,
@@ -135,10 +146,14 @@ impl Merge {
         self.synthesis.last_graph.as_ref()
     }
 
-    /// Lays the next source down; returns its index and the cut cost, or None when all are down.
-    pub fn step(&mut self) -> Result<Option<(usize, f64)>> {
+    /// Lays the next source down with its graph-cut seam.
+    pub fn step(&mut self) -> Result<MergeEvent> {
         if self.is_done() {
-            return Ok(None);
+            return Ok(MergeEvent {
+                source: None,
+                cut_cost: 0.0,
+                done: true,
+            });
         }
         let k = self.next;
         let (tx, ty) = self.offsets[k];
@@ -155,7 +170,11 @@ impl Merge {
         }
         let placed = self.synthesis.place(patch, &force_new, &keep_old)?;
         self.next += 1;
-        Ok(Some((k, placed.cut_cost)))
+        Ok(MergeEvent {
+            source: Some(k),
+            cut_cost: placed.cut_cost,
+            done: self.is_done(),
+        })
     }
 
     /// Which source each output pixel shows (-1 where none does).
@@ -216,11 +235,12 @@ mod tests {
             false,
         )
         .unwrap();
-        assert_eq!(merge.step().unwrap().map(|s| s.0), Some(0));
-        let (k, cut) = merge.step().unwrap().unwrap();
+        assert_eq!(merge.step().unwrap().source, Some(0));
+        let second = merge.step().unwrap();
+        let (k, cut) = (second.source.unwrap(), second.cut_cost);
         assert_eq!(k, 1);
         assert!(cut > 0.0);
-        assert!(merge.is_done() && merge.step().unwrap().is_none());
+        assert!(merge.is_done() && merge.step().unwrap().source.is_none());
         let map = merge.source_map();
         for (i, &c) in constraints.iter().enumerate() {
             if c > 0 {

@@ -1,5 +1,5 @@
 //! The logistic map x <- 4 x (1 - x), the chaotic sequence Shen et al. 2009 use to vary where
-//! patches come from (their ref. [7]). At r = 4 its values crowd towards 0 and 1 (the arcsine
+//! patches come from (their ref. \[7\]). At r = 4 its values crowd towards 0 and 1 (the arcsine
 //! density), which would favour the first and last of the acceptable patches; the change of
 //! variable u = (2 / pi) asin(sqrt(x)) turns it into the tent map, whose values are uniform, so
 //! every acceptable patch is as likely.

@@ -1,5 +1,5 @@
 //! Stage 4 of Shen et al. 2009: fast layer-based texture design. The paper says little beyond
-//! "completion-based synthesis [29] with the quadtree pyramid [14] and a chaotic map"; here is how
+//! "completion-based synthesis \[29\] with the quadtree pyramid \[14\] and a chaotic map"; here is how
 //! it is made concrete:
 //!
 //! - **Layers and layout.** Each layer is a designed texture (the sample, a deformed one, a
@@ -10,7 +10,7 @@
 //!   Liang et al. 2001): each new `patch_size` square overlaps what is made by a boundary zone of
 //!   `overlap` pixels, and is chosen from its layer by the SSD over that zone (the "known" part of
 //!   an image-completion step).
-//! - **Search.** Exhaustive (every position, as [29]) or by the quadtree pyramid (`qtp`). A layer
+//! - **Search.** Exhaustive (every position, as \[29\]) or by the quadtree pyramid (`qtp`). A layer
 //!   larger than 512 on a side (a photo) is searched, for each patch, within a 512-sided window
 //!   of it drawn at random (`window`), so a patch costs what it costs with a 512x512 layer.
 //! - **Choice.** Every candidate within `(1 + tolerance)` of the best is acceptable; one is
