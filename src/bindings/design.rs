@@ -8,10 +8,11 @@ use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
 use super::exemplar::Exemplar;
-use super::optimization::output_size;
 use super::options::{OptionsReader, object};
 use super::pixels::{render_into, write_rgba};
-use super::schema::{DONE, EventField, Kind, MEMORY_BUDGET, Opt, Schema, invalid, kind_field};
+use super::schema::{
+    DONE, EventField, Kind, MEMORY_BUDGET, Opt, Schema, invalid, kind_field, output_size,
+};
 use super::session::{JsSession, js_session};
 use crate::core::{Error, Image};
 use crate::methods::design::layers::{

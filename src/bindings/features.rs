@@ -8,10 +8,11 @@ use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
 use super::exemplar::Exemplar;
-use super::optimization::output_size;
 use super::options::{OptionsReader, object};
 use super::pixels::{render_into, write_rgba};
-use super::schema::{DONE, EventField, Kind, MEMORY_BUDGET, Opt, Schema, invalid, kind_field};
+use super::schema::{
+    DONE, EventField, Kind, MEMORY_BUDGET, Opt, Schema, invalid, kind_field, output_size,
+};
 use super::session::{JsSession, js_session};
 use crate::core::{Error, from_rgba8};
 use crate::methods::design::Deformation;
@@ -630,7 +631,7 @@ impl FeatureSynthesis {
         self.synthesis
             .graphcut_session()
             .and_then(|s| s.placement_costs())
-            .map_or(JsValue::NULL, super::graphcut::costs_object)
+            .map_or(JsValue::NULL, super::anatomy::costs_object)
     }
 
     /// The last graph-cut placement's seam graph (see `GraphcutTextures.placementGraph`), or
@@ -640,7 +641,7 @@ impl FeatureSynthesis {
         self.synthesis
             .graphcut_session()
             .and_then(|s| s.placement_graph())
-            .map_or(JsValue::NULL, super::graphcut::graph_object)
+            .map_or(JsValue::NULL, super::anatomy::graph_object)
     }
 
     /// The synthesised feature map, coloured by orientation (output size).

@@ -7,11 +7,10 @@ use wasm_bindgen::{JsCast, prelude::*};
 
 use super::error::JsResult;
 use super::exemplar::Exemplar;
-use super::optimization::output_size;
 use super::options::OptionsReader;
 use super::pixels::{check_target, render_into, write_rgba};
 use super::schema::{
-    DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, invalid, kind_field,
+    DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, invalid, kind_field, output_size,
 };
 use super::session::{JsSession, js_session};
 use crate::core::Error;

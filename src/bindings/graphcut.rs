@@ -2,21 +2,22 @@
 //! and returns a plain event object; the image and the teaching views render into the caller's
 //! buffers.
 
-use js_sys::{Float32Array, Uint8Array, Uint8ClampedArray};
+use js_sys::Uint8ClampedArray;
 use wasm_bindgen::prelude::*;
 
+use super::anatomy::{costs_object, graph_object};
 use super::error::JsResult;
 use super::exemplar::Exemplar;
 use super::features::FeatureMap;
-use super::optimization::output_size;
 use super::options::{OptionsReader, object};
 use super::pixels::{render_into, write_rgba};
-use super::schema::{DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field};
+use super::schema::{
+    DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field, output_size,
+};
 use super::session::{JsSession, js_session};
 use crate::core::Error;
 use crate::methods::features::broken::carried_broken;
 use crate::methods::features::carried::carried_mask;
-use crate::methods::graphcut::anatomy::{CostSurface, GraphView};
 use crate::methods::graphcut::placement::Region;
 use crate::methods::graphcut::teaching::{label_map, seam_heat_map, seam_overlay};
 use crate::methods::graphcut::{Blend, Event, Options, Placement, Session, Transforms};
@@ -392,44 +393,6 @@ impl GraphcutTextures {
             .map(|s| s.name.clone())
             .collect()
     }
-}
-
-/// A cost surface as the JS object `placementCosts()` returns.
-pub(super) fn costs_object(c: &CostSurface) -> JsValue {
-    let (cx, cy) = c.chosen.map_or((-1.0, -1.0), |(x, y)| (x as f64, y as f64));
-    object(&[
-        ("x", (c.x as f64).into()),
-        ("y", (c.y as f64).into()),
-        ("width", (c.width as u32).into()),
-        ("height", (c.height as u32).into()),
-        ("cost", Float32Array::from(c.cost.as_slice()).into()),
-        (
-            "probability",
-            Float32Array::from(c.probability.as_slice()).into(),
-        ),
-        ("chosenX", cx.into()),
-        ("chosenY", cy.into()),
-        ("temperature", c.temperature.into()),
-    ])
-}
-
-/// A seam graph view as the JS object `placementGraph()` returns.
-pub(super) fn graph_object(g: &GraphView) -> JsValue {
-    object(&[
-        ("x", (g.x as f64).into()),
-        ("y", (g.y as f64).into()),
-        ("width", (g.width as u32).into()),
-        ("height", (g.height as u32).into()),
-        ("kind", Uint8Array::from(g.kind.as_slice()).into()),
-        ("right", Float32Array::from(g.right.as_slice()).into()),
-        ("down", Float32Array::from(g.down.as_slice()).into()),
-        (
-            "oldRight",
-            Float32Array::from(g.old_right.as_slice()).into(),
-        ),
-        ("oldDown", Float32Array::from(g.old_down.as_slice()).into()),
-        ("taken", Uint8Array::from(g.taken.as_slice()).into()),
-    ])
 }
 
 impl GraphcutTextures {

@@ -7,10 +7,9 @@ use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
 use super::exemplar::Exemplar;
-use super::optimization::output_size;
 use super::options::OptionsReader;
 use super::pixels::{render_into, write_rgba};
-use super::schema::{DONE, EventField, Kind, Opt, Schema, kind_field};
+use super::schema::{DONE, EventField, Kind, Opt, Schema, kind_field, output_size};
 use super::session::{JsSession, js_session};
 use crate::core::error::check_size;
 use crate::core::{Error, Image};
@@ -208,7 +207,7 @@ impl GraphcutMerge {
         self.merge
             .as_ref()
             .and_then(Merge::placement_graph)
-            .map_or(JsValue::NULL, super::graphcut::graph_object)
+            .map_or(JsValue::NULL, super::anatomy::graph_object)
     }
 
     /// The seams between sources, red over transparent.

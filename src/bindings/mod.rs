@@ -1,6 +1,7 @@
 //! Layer 4: the only code that knows about JavaScript. Each file wraps one JS-visible type; inputs
 //! are validated here and every failure becomes a JS `Error` whose message names the problem.
 
+mod anatomy;
 mod design;
 mod error;
 mod exemplar;
@@ -8,6 +9,7 @@ mod features;
 mod flow;
 mod graphcut;
 mod merge;
+mod object;
 mod optimization;
 mod options;
 mod pixels;
@@ -35,6 +37,32 @@ use wasm_bindgen::prelude::*;
 #[wasm_bindgen(start)]
 pub fn start() {
     console_error_panic_hook::set_once();
+}
+
+/// The declared options and events of every class, as `[{ class, optionsName, options: [{ key,
+/// ts, default, doc, choices }], required, eventName, event: [{ key, ts, doc }] }]`. Not part of
+/// the public API: the build writes the package's `schema.d.ts` from it, and the drift test
+/// checks real sessions against it.
+#[wasm_bindgen(js_name = __schema, skip_typescript)]
+pub fn schema() -> js_sys::Array {
+    [
+        &optimization::SCHEMA,
+        &graphcut::SCHEMA,
+        &merge::SCHEMA,
+        &flow::SCHEMA,
+        &flow::COMPONENT_SCHEMA,
+        &design::RANGE_SCHEMA,
+        &design::RANGES_SCHEMA,
+        &design::TILEABLE_SCHEMA,
+        &design::BRUSH_SCHEMA,
+        &design::LAYER_SCHEMA,
+        &features::DETECT_SCHEMA,
+        &features::SCHEMA,
+        &video::SCHEMA,
+    ]
+    .into_iter()
+    .map(|s| s.to_js())
+    .collect()
 }
 
 /// The library's version, from `Cargo.toml`.

@@ -9,7 +9,9 @@ use super::error::JsResult;
 use super::exemplar::Exemplar;
 use super::options::{OptionsReader, object};
 use super::pixels::render_into;
-use super::schema::{DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field};
+use super::schema::{
+    DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field, output_size,
+};
 use super::session::{JsSession, js_session};
 use crate::core::{Error, from_rgba8};
 use crate::methods::optimization::SoftConstraints;
@@ -18,21 +20,6 @@ use crate::methods::optimization::session::Phase;
 use crate::methods::optimization::teaching::{Field, field, offset_map};
 use crate::methods::optimization::{Energy, Event, EventKind, Options, Session, Start};
 use crate::solvers::nn::Search;
-
-/// Output width and height: every session that makes an image of a chosen size takes them.
-pub(crate) const fn output_size(
-    key: &'static str,
-    max: u64,
-    default: Option<&'static str>,
-    doc: &'static str,
-) -> Opt {
-    Opt {
-        key,
-        kind: Kind::Integer { min: 1, max },
-        default,
-        doc,
-    }
-}
 
 const PHASES: &str = "'start' | 'first-match' | 'e-step' | 'm-step'";
 

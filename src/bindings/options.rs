@@ -7,6 +7,7 @@ use wasm_bindgen::{JsCast, JsValue};
 use std::cell::Cell;
 
 use super::error::JsResult;
+pub use super::object::object;
 use super::schema::{Kind, Opt, Schema, invalid, undeclared};
 use crate::core::Error;
 use crate::core::budget::{
@@ -253,15 +254,6 @@ fn kind_mismatch(name: &'static str) -> wasm_bindgen::JsError {
     wasm_bindgen::JsError::new(&format!(
         "option '{name}' is read as another type than its table declares"
     ))
-}
-
-/// Builds a plain JS object from (key, value) pairs.
-pub fn object(entries: &[(&str, JsValue)]) -> JsValue {
-    let obj = Object::new();
-    for (key, value) in entries {
-        Reflect::set(&obj, &(*key).into(), value).expect("setting a property of a fresh object");
-    }
-    obj.into()
 }
 
 impl OptionsReader {

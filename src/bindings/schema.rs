@@ -6,10 +6,11 @@
 //! (`schema.d.ts`) are written from it by `scripts/make-typings.mjs`, which reads the tables
 //! through the hidden export `__schema()`.
 
-use js_sys::{Array, Reflect};
+use js_sys::Array;
 use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
+use super::object::object;
 use crate::core::Error;
 
 /// What an option's value must be.
@@ -84,6 +85,21 @@ pub struct Schema {
     pub event: &'static [EventField],
 }
 
+/// Output width or height: every session that makes an image of a chosen size takes them.
+pub const fn output_size(
+    key: &'static str,
+    max: u64,
+    default: Option<&'static str>,
+    doc: &'static str,
+) -> Opt {
+    Opt {
+        key,
+        kind: Kind::Integer { min: 1, max },
+        default,
+        doc,
+    }
+}
+
 /// `memoryBudgetMiB`, which every session that allocates by its options takes.
 pub const MEMORY_BUDGET: Opt = Opt {
     key: "memoryBudgetMiB",
@@ -138,16 +154,16 @@ impl Schema {
                 declared.join(", ")
             )));
         }
-        Ok(super::options::object(entries))
+        Ok(object(entries))
     }
 
     /// The table as a plain JS object, for the typings generator and the drift test.
-    fn to_js(self) -> JsValue {
+    pub fn to_js(self) -> JsValue {
         let options: Array = self
             .options
             .iter()
             .map(|o| {
-                super::options::object(&[
+                object(&[
                     ("key", o.key.into()),
                     ("ts", o.kind.typescript().into()),
                     ("default", o.default.map_or(JsValue::NULL, JsValue::from)),
@@ -160,14 +176,14 @@ impl Schema {
             .event
             .iter()
             .map(|f| {
-                super::options::object(&[
+                object(&[
                     ("key", f.key.into()),
                     ("ts", f.ts.into()),
                     ("doc", f.doc.into()),
                 ])
             })
             .collect();
-        super::options::object(&[
+        object(&[
             ("class", self.class.into()),
             ("optionsName", self.options_name.into()),
             ("options", options.into()),
@@ -200,39 +216,6 @@ pub fn undeclared(class: &str, key: &str) -> JsError {
     JsError::new(&format!(
         "{class}: option '{key}' is read but not declared in its options table"
     ))
-}
-
-/// Every table, for `__schema()`.
-fn all() -> Vec<&'static Schema> {
-    vec![
-        &super::optimization::SCHEMA,
-        &super::graphcut::SCHEMA,
-        &super::merge::SCHEMA,
-        &super::flow::SCHEMA,
-        &super::flow::COMPONENT_SCHEMA,
-        &super::design::RANGE_SCHEMA,
-        &super::design::RANGES_SCHEMA,
-        &super::design::TILEABLE_SCHEMA,
-        &super::design::BRUSH_SCHEMA,
-        &super::design::LAYER_SCHEMA,
-        &super::features::DETECT_SCHEMA,
-        &super::features::SCHEMA,
-        &super::video::SCHEMA,
-    ]
-}
-
-/// The declared options and events of every class, as `[{ class, optionsName, options: [{ key,
-/// ts, default, doc, choices }], required, eventName, event: [{ key, ts, doc }] }]`. Not part of the
-/// public API: the build writes the package's `schema.d.ts` from it, and the drift test checks
-/// real sessions against it.
-#[wasm_bindgen(js_name = __schema, skip_typescript)]
-pub fn schema() -> Array {
-    all().into_iter().map(|s| s.to_js()).collect()
-}
-
-/// Sets `key` on an object a binding made (it cannot fail on a plain object).
-pub fn set(object: &JsValue, key: &str, value: JsValue) {
-    let _ = Reflect::set(object, &key.into(), &value);
 }
 
 /// The error for a bad value of option `name`.

@@ -5,11 +5,12 @@
 use js_sys::Uint8ClampedArray;
 use wasm_bindgen::prelude::*;
 
+use super::anatomy::{costs_object, graph_object};
 use super::error::JsResult;
-use super::graphcut::{costs_object, graph_object};
+use super::object::set;
 use super::options::{OptionsReader, object};
 use super::pixels::check_target;
-use super::schema::{DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field, set};
+use super::schema::{DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field};
 use super::session::{JsSession, js_session};
 use crate::core::Error;
 use crate::methods::video::teaching::{frame_rgba, seams_rgba, slice_xt_rgba};
