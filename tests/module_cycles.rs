@@ -19,10 +19,12 @@ fn module_of(relative: &str) -> Vec<String> {
     parts
 }
 
-/// The code of a file without comments, string literals and `#[cfg(test)]` items.
-fn code_of(text: &str) -> String {
-    let mut out = String::new();
+/// The code of a file without comments, string literals and `#[cfg(test)]` items, split by the
+/// inline module (`mod name { ... }`) it lies in: the path of inline modules, and its code.
+fn code_of(text: &str) -> BTreeMap<Vec<String>, String> {
+    let mut out: BTreeMap<Vec<String>, String> = BTreeMap::new();
     let mut skip_depth: Option<usize> = None;
+    let mut inline: Vec<(String, usize)> = Vec::new();
     let mut depth = 0usize;
     let mut pending_test = false;
     for line in text.lines() {
@@ -36,22 +38,29 @@ fn code_of(text: &str) -> String {
         let closes = line.matches('}').count();
         if pending_test {
             pending_test = false;
-            if trimmed.ends_with(';') {
-                continue; // `mod tests;`
-            }
             if opens > closes {
                 skip_depth = Some(depth);
                 depth += opens - closes;
-                continue;
             }
             continue;
         }
+        let before = depth;
         depth = (depth + opens).saturating_sub(closes);
         if let Some(d) = skip_depth {
             if depth <= d {
                 skip_depth = None;
             }
             continue;
+        }
+        let words: Vec<&str> = trimmed.split_whitespace().collect();
+        if let Some(i) = words.iter().position(|w| *w == "mod") {
+            if words.get(i + 2) == Some(&"{") && opens > closes {
+                inline.push((words[i + 1].to_string(), before));
+                continue;
+            }
+        }
+        while inline.last().is_some_and(|&(_, d)| depth <= d) {
+            inline.pop();
         }
         // String literals hold no paths.
         let mut kept = String::new();
@@ -63,8 +72,10 @@ fn code_of(text: &str) -> String {
                 kept.push(c);
             }
         }
-        out.push_str(&kept);
-        out.push('\n');
+        let scope: Vec<String> = inline.iter().map(|(n, _)| n.clone()).collect();
+        let chunk = out.entry(scope).or_default();
+        chunk.push_str(&kept);
+        chunk.push('\n');
     }
     out
 }
@@ -123,8 +134,8 @@ fn expand_into(prefix: &str, tree: &str, out: &mut Vec<(String, String)>) {
 struct Crate {
     /// Module path -> file (relative to `src/`).
     files: BTreeMap<Vec<String>, String>,
-    /// Module path -> (re-exported name -> absolute path it names).
-    reexports: BTreeMap<Vec<String>, BTreeMap<String, Vec<String>>>,
+    /// Module path -> (re-exported name -> absolute path it names, `None` for another crate's).
+    reexports: BTreeMap<Vec<String>, BTreeMap<String, Option<Vec<String>>>>,
 }
 
 impl Crate {
@@ -174,7 +185,7 @@ impl Crate {
             depth < 16,
         ) {
             if let Some(target) = map.get(name) {
-                let mut target = target.clone();
+                let mut target = target.clone()?;
                 target.extend(path[module.len() + 1..].iter().cloned());
                 return self.resolve(&target, depth + 1);
             }
@@ -213,7 +224,13 @@ fn graph(sources: &[(String, String)]) -> BTreeMap<String, BTreeSet<String>> {
     };
     let codes: Vec<(String, Vec<String>, String)> = sources
         .iter()
-        .map(|(p, t)| (p.clone(), module_of(p), code_of(t)))
+        .flat_map(|(p, t)| {
+            code_of(t).into_iter().map(|(scope, code)| {
+                let mut module = module_of(p);
+                module.extend(scope);
+                (p.clone(), module, code)
+            })
+        })
         .collect();
     for (_, module, code) in &codes {
         let mut map = BTreeMap::new();
@@ -222,12 +239,14 @@ fn graph(sources: &[(String, String)]) -> BTreeMap<String, BTreeSet<String>> {
                 continue;
             }
             for (path, name) in expand(&tree) {
-                if let Some(abs) = krate.absolute(module, &path) {
-                    map.insert(name, abs);
-                }
+                map.insert(name, krate.absolute(module, &path));
             }
         }
-        krate.reexports.insert(module.clone(), map);
+        krate
+            .reexports
+            .entry(module.clone())
+            .or_default()
+            .extend(map);
     }
     let mut edges: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
     for (file, module, code) in &codes {
@@ -270,7 +289,7 @@ fn graph(sources: &[(String, String)]) -> BTreeMap<String, BTreeSet<String>> {
             }
         }
         targets.remove(file);
-        edges.insert(file.clone(), targets);
+        edges.entry(file.clone()).or_default().extend(targets);
     }
     edges
 }

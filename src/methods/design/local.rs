@@ -10,8 +10,7 @@ use super::poisson_paste;
 use crate::core::{Error, Image, Result};
 use crate::solvers::maxflow::Graph;
 
-/// Most bytes of earlier bases kept for undo (64 MiB: 85 strokes on a 256x256 RGB base).
-pub const UNDO_BUDGET_BYTES: usize = 64 << 20;
+pub use super::memory::UNDO_BUDGET_BYTES;
 
 /// Options of the brush.
 #[derive(Debug, Clone, Copy, PartialEq)]

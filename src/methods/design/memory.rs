@@ -8,11 +8,15 @@
 //!   transpose, the rearranged halves, the stitched transpose and the result are live at once
 //!   (`6 * 4c N`), with the seam mask (`N`) and the graph over the overlap strip.
 //! - The texture brush: the base and the copy a stroke keeps for undo (`2 * 4c N`), the undo
-//!   history (at most [`super::local::UNDO_BUDGET_BYTES`] or one image), and a stroke's
+//!   history (at most [`UNDO_BUDGET_BYTES`] or one image), and a stroke's
 //!   labelling graph and Poisson solve over at most the base (about 240 bytes a pixel).
 
 use crate::core::budget::{WorkingSet, image_bytes};
 use crate::methods::graphcut::memory::GRAPH_BYTES_PER_PATCH_PIXEL;
+
+/// Most bytes of earlier bases the brush keeps for undo (64 MiB: 85 strokes on a 256x256 RGB
+/// base).
+pub const UNDO_BUDGET_BYTES: usize = 64 << 20;
 
 /// What the sessions are called in messages.
 pub const LAYERS: &str = "layer-based texture design";
@@ -58,10 +62,7 @@ pub fn brush_working_set((width, height, channels): (usize, usize, usize)) -> Wo
     let image = image_bytes(width, height, channels);
     WorkingSet::new()
         .with("base and undo copy", 2 * image)
-        .with(
-            "undo history",
-            image.max(super::local::UNDO_BUDGET_BYTES as u64),
-        )
+        .with("undo history", image.max(UNDO_BUDGET_BYTES as u64))
         .with("stroke", n * 240)
 }
 

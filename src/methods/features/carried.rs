@@ -3,9 +3,29 @@
 //! of the source pixel it shows. Feature-guided placement matches against it; the broken-feature
 //! count at seams counts its curve ends, for feature-guided synthesis and plain graph cut alike.
 
-use super::hybrid::SourceFeatures;
+use super::detect::FeatureMap;
+use super::matching::FeatureIndex;
 use crate::methods::graphcut::canvas::UNCOVERED;
 use crate::methods::graphcut::synthesis::Synthesis;
+
+/// One source of the synthesis with its features.
+pub struct SourceFeatures {
+    pub map: FeatureMap,
+    pub index: FeatureIndex,
+    /// Its feature pixels (y * width + x).
+    pub pixels: Vec<usize>,
+}
+
+impl SourceFeatures {
+    #[must_use]
+    pub fn new(map: FeatureMap) -> SourceFeatures {
+        SourceFeatures {
+            index: FeatureIndex::new(&map),
+            pixels: (0..map.mask.len()).filter(|&i| map.mask[i]).collect(),
+            map,
+        }
+    }
+}
 
 /// The synthesised feature map of a graph-cut canvas: each made pixel carries the feature (and
 /// tangent) of the source pixel it shows.

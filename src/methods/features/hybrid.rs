@@ -8,9 +8,10 @@
 //! scan-order synthesis), expressed in SSD units, and the offset is drawn by graph cut's eq. 3;
 //! the patch is merged with graph cut's seam memory and refinement patches.
 
+use super::carried::SourceFeatures;
 use super::carried::canvas_feature;
 use super::detect::FeatureMap;
-use super::matching::{FeatureIndex, TAU_MATCH};
+use super::matching::TAU_MATCH;
 use crate::core::{Image, Result, math};
 use crate::methods::graphcut::canvas::{Patch, UNCOVERED};
 use crate::methods::graphcut::placement::Candidate;
@@ -18,25 +19,6 @@ use crate::methods::graphcut::session::Drawn;
 use crate::methods::graphcut::source::Source;
 use crate::methods::graphcut::synthesis::Synthesis;
 use crate::methods::graphcut::{Event, Options, Session};
-
-/// One source of the synthesis with its features.
-pub struct SourceFeatures {
-    pub map: FeatureMap,
-    pub index: FeatureIndex,
-    /// Its feature pixels (y * width + x).
-    pub pixels: Vec<usize>,
-}
-
-impl SourceFeatures {
-    #[must_use]
-    pub fn new(map: FeatureMap) -> SourceFeatures {
-        SourceFeatures {
-            index: FeatureIndex::new(&map),
-            pixels: (0..map.mask.len()).filter(|&i| map.mask[i]).collect(),
-            map,
-        }
-    }
-}
 
 /// What a feature-guided graph-cut placement chose.
 #[derive(Debug, Clone, Copy, PartialEq)]

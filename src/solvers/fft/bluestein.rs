@@ -6,7 +6,10 @@
 //! a convolution with its conjugate, and a product by the chirp again. The inverse conjugates the
 //! chirp.
 
-use super::{Complex, Direction, Fft};
+use super::Complex;
+use super::smooth::smooth_size;
+use super::stockham::Stockham;
+use super::twiddle::Direction;
 
 type C = Complex<f64>;
 
@@ -18,13 +21,14 @@ pub(super) struct Bluestein {
     /// The spectrum of the convolution kernel `conj(c)` wrapped onto `m`, divided by `m` so that
     /// the unnormalised inverse gives the convolution itself.
     kernel: Vec<C>,
-    forward: Fft,
-    inverse: Fft,
+    /// Transforms of the smooth length `m`.
+    forward: Stockham,
+    inverse: Stockham,
 }
 
 impl Bluestein {
     pub(super) fn new(len: usize, direction: Direction) -> Self {
-        let m = super::smooth_size(2 * len - 1);
+        let m = smooth_size(2 * len - 1);
         let sign = match direction {
             Direction::Forward => -1.0,
             Direction::Inverse => 1.0,
@@ -37,16 +41,16 @@ impl Bluestein {
                 C::new(crate::core::math::cos(angle), crate::core::math::sin(angle))
             })
             .collect();
-        let forward = Fft::new(m, Direction::Forward);
-        let inverse = Fft::new(m, Direction::Inverse);
+        let plan = |d| Stockham::new(m, d).expect("smooth_size gives a smooth length");
+        let (forward, inverse) = (plan(Direction::Forward), plan(Direction::Inverse));
         let mut kernel = vec![C::default(); m];
         kernel[0] = chirp[0].conj();
         for j in 1..len {
             kernel[j] = chirp[j].conj();
             kernel[m - j] = chirp[j].conj();
         }
-        let mut scratch = vec![C::default(); forward.scratch_len()];
-        forward.process(&mut kernel, &mut scratch);
+        let mut scratch = vec![C::default(); m];
+        forward.process(&mut kernel, &mut scratch, 1);
         let scale = 1.0 / m as f64;
         for value in &mut kernel {
             *value *= scale;
@@ -62,7 +66,7 @@ impl Bluestein {
 
     pub(super) fn scratch_len(&self) -> usize {
         let m = self.kernel.len();
-        m + self.forward.scratch_len().max(self.inverse.scratch_len())
+        2 * m
     }
 
     /// Transforms the `batch` interleaved sequences of `data` one after the other.
@@ -77,11 +81,11 @@ impl Bluestein {
                 *b = x * c;
             }
             buffer[self.len..].fill(C::default());
-            self.forward.process(buffer, rest);
+            self.forward.process(buffer, &mut rest[..buffer.len()], 1);
             for (b, &k) in buffer.iter_mut().zip(&self.kernel) {
                 *b *= k;
             }
-            self.inverse.process(buffer, rest);
+            self.inverse.process(buffer, &mut rest[..buffer.len()], 1);
             for ((x, &b), &c) in data
                 .iter_mut()
                 .skip(lane)

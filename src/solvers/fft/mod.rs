@@ -14,25 +14,21 @@
 mod bluestein;
 mod lane;
 mod real;
+mod smooth;
 mod stockham;
 #[cfg(test)]
 mod tests;
+mod twiddle;
 
 pub use num_complex::Complex;
 pub use real::RealFft;
 
+pub use smooth::{is_smooth, smooth_size};
+pub use twiddle::Direction;
+
 use bluestein::Bluestein;
 use lane::Lane;
 use stockham::Stockham;
-
-/// Which way a transform goes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Direction {
-    /// `e^{-2 pi i j k / n}`.
-    Forward,
-    /// `e^{+2 pi i j k / n}`, unnormalised.
-    Inverse,
-}
 
 /// A planned complex transform of one length and direction: twiddle factors precomputed, no
 /// allocation when it runs.
@@ -146,39 +142,5 @@ pub fn correlate_spectra(
         } else {
             product.get()
         };
-    }
-}
-
-/// The smallest length `>= n` whose only prime factors are 2, 3 and 5.
-#[must_use]
-pub fn smooth_size(n: usize) -> usize {
-    (n.max(1)..)
-        .find(|&m| is_smooth(m))
-        .expect("smooth numbers are unbounded")
-}
-
-/// Whether `n`'s only prime factors are 2, 3 and 5.
-#[must_use]
-pub fn is_smooth(n: usize) -> bool {
-    if n == 0 {
-        return false;
-    }
-    let mut rest = n;
-    for p in [2, 3, 5] {
-        while rest.is_multiple_of(p) {
-            rest /= p;
-        }
-    }
-    rest == 1
-}
-
-/// `e^{sign 2 pi i numerator / denominator}` with `sign` from the direction, computed directly
-/// (no recurrence), so every twiddle is accurate to the last bits.
-fn twiddle(numerator: usize, denominator: usize, direction: Direction) -> Complex<f64> {
-    let angle = -2.0 * std::f64::consts::PI * (numerator as f64) / (denominator as f64);
-    let (sin, cos) = (crate::core::math::sin(angle), crate::core::math::cos(angle));
-    match direction {
-        Direction::Forward => Complex::new(cos, sin),
-        Direction::Inverse => Complex::new(cos, -sin),
     }
 }

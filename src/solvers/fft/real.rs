@@ -8,7 +8,8 @@
 //! values.
 
 use super::lane::Lane;
-use super::{Complex, Direction, Fft, twiddle};
+use super::twiddle::{Direction, twiddle};
+use super::{Complex, Fft};
 
 type C = Complex<f64>;
 

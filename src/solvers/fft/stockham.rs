@@ -12,8 +12,10 @@
 //!
 //! with `w_L = e^{-2 pi i / L}`. After the last pass (`L = 1`) the buffer holds the transform.
 
+use super::Complex;
 use super::lane::Lane;
-use super::{Complex, Direction, twiddle};
+use super::smooth::is_smooth;
+use super::twiddle::{Direction, twiddle};
 
 type C = Complex<f64>;
 
@@ -38,7 +40,7 @@ pub(super) struct Stockham {
 impl Stockham {
     /// `None` when `len` has a prime factor other than 2, 3 and 5.
     pub(super) fn new(len: usize, direction: Direction) -> Option<Self> {
-        if !super::is_smooth(len) {
+        if !is_smooth(len) {
             return None;
         }
         // Radix 8 and 4 where possible (each pass reads and writes the whole buffer, so fewer
