@@ -18,7 +18,7 @@ use super::session::{JsSession, js_session};
 use crate::core::Error;
 use crate::methods::features::broken::carried_broken;
 use crate::methods::features::carried::carried_mask;
-use crate::methods::graphcut::placement::Region;
+use crate::methods::graphcut::region::Region;
 use crate::methods::graphcut::teaching::{label_map, seam_heat_map, seam_overlay};
 use crate::methods::graphcut::{Blend, Event, Options, Placement, Session, Transforms};
 

@@ -14,7 +14,7 @@ use super::detect::FeatureMap;
 use super::matching::TAU_MATCH;
 use crate::core::{Image, Result, math};
 use crate::methods::graphcut::canvas::{Patch, UNCOVERED};
-use crate::methods::graphcut::placement::Candidate;
+use crate::methods::graphcut::region::Candidate;
 use crate::methods::graphcut::session::Drawn;
 use crate::methods::graphcut::source::Source;
 use crate::methods::graphcut::synthesis::Synthesis;
@@ -98,7 +98,7 @@ pub fn frontier_in(s: &Synthesis, band: usize, rect: Rect) -> Vec<bool> {
         return rect
             .pixels()
             .map(|(x, y)| {
-                crate::methods::graphcut::placement::region_contains(r, x, y, w, h, s.canvas.wrap)
+                crate::methods::graphcut::region::region_contains(r, x, y, w, h, s.canvas.wrap)
             })
             .collect();
     }
@@ -402,7 +402,7 @@ mod tests {
     use super::*;
     use crate::core::testing::sample;
     use crate::methods::features::detect::{DetectOptions, detect};
-    use crate::methods::features::matching::{ContextFeature, Region};
+    use crate::methods::features::matching::{ContextFeature, FeatureIndex, Region};
 
     /// A map with one curve: column `x` from top to bottom, tangent vertical.
     fn vertical_curve(w: usize, h: usize, x: usize) -> FeatureMap {

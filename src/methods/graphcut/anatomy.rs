@@ -3,7 +3,7 @@
 //! whose minimum cut is the seam, laid out per pixel of the patch's box. Recorded only when asked
 //! ([`super::Session::set_anatomy`]): a synthesis that nobody watches pays nothing.
 
-use super::placement::Candidate;
+use super::region::Candidate;
 use super::seam_graph::SeamGraph;
 use crate::solvers::maxflow::HARD_CONSTRAINT;
 

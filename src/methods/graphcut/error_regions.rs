@@ -7,14 +7,14 @@
 //! step took 0.5-1 s for that alone).
 //!
 //! The first look at a covered output computes everything with the whole-output functions
-//! ([`Canvas::seam_error`] and the two passes of `placement::box_sums`), so it gives the same
+//! ([`Canvas::seam_error`] and the two passes of `box_sum::box_sums`), so it gives the same
 //! region as they do. Later updates
 //! slide the same running sums over the changed part only, starting where that part starts: a
 //! window's sum can differ from a whole-row slide in its last bit, so two windows whose totals
 //! agree to about 1e-7 may trade places.
 
 use super::canvas::Canvas;
-use super::placement::{slide_window, sliding_column_sums, sliding_row_sums};
+use crate::solvers::box_sum::{slide_window, sliding_column_sums, sliding_row_sums};
 
 /// Pixels whose seam error changed since the sums were brought up to date, as a box.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -244,9 +244,9 @@ fn pixel_error(canvas: &Canvas, p: usize) -> f32 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::placement::box_sums;
     use super::*;
     use crate::core::Rng;
+    use crate::solvers::box_sum::box_sums;
 
     /// The region found over the whole output, as before the sums were kept.
     fn whole(canvas: &Canvas, side: usize) -> (usize, usize, f32) {

@@ -13,6 +13,7 @@ pub mod merge;
 pub mod options;
 pub mod overlap;
 pub mod placement;
+pub mod region;
 pub mod seam;
 pub mod seam_graph;
 pub mod session;

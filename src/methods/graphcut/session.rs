@@ -5,7 +5,7 @@
 use super::anatomy::{CostSurface, GraphView};
 use super::canvas::Patch;
 use super::options::{Blend, Options};
-use super::placement::{Candidate, Region};
+use super::region::{Candidate, Region};
 use super::synthesis::Synthesis;
 use crate::core::{Image, Result};
 

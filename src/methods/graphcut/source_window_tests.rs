@@ -14,7 +14,7 @@ use crate::core::testing::sample;
 /// FFT search are those of a `MAX_SOURCE_SIDE` exemplar, while the windows move over the photo.
 #[test]
 fn a_large_exemplar_is_searched_through_bounded_windows() {
-    use super::placement::SearchWindow;
+    use super::region::SearchWindow;
     use super::source_window::MAX_SOURCE_SIDE;
     use crate::solvers::fft_ssd::transform_size;
     let photo = Image::from_fn(1500, 1200, 3, |x, y, c| {

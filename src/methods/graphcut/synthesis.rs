@@ -260,12 +260,12 @@ fn working_set(
     let patch = sources
         .iter()
         .map(|s| {
-            let (w, h) = super::placement::patch_extent(s, canvas);
+            let (w, h) = super::region::patch_extent(s, canvas);
             w * h
         })
         .max()
         .unwrap_or(0);
-    let search = super::placement::largest_search(options, sources, canvas)
+    let search = super::region::largest_search(options, sources, canvas)
         .map_or(0, |(_, nx, ny)| nx.saturating_mul(ny));
     let dims: Vec<(usize, usize)> = sources.iter().map(|s| (s.width(), s.height())).collect();
     super::memory::working_set(

@@ -284,7 +284,7 @@ fn same_seed_same_output() {
 /// over the whole output.
 #[test]
 fn matching_costs_equal_a_direct_area_normalised_ssd() {
-    use super::placement::region_contains;
+    use super::region::region_contains;
     let exemplar = noise(16, 12, 3, 3);
     for wrap in [false, true] {
         for placement in [Placement::EntirePatch, Placement::SubPatch] {

@@ -1,5 +1,6 @@
 //! Every transform against the direct O(n^2) sum of its definition.
 
+use super::twiddle::twiddle;
 use super::*;
 use crate::core::Rng;
 
