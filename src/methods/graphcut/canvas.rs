@@ -2,7 +2,7 @@
 //! and the cost of the seam on every edge between neighbouring pixels, remembered so that later
 //! patches can overwrite bad old seams (section 3.1).
 
-use super::error_regions::ErrorRegions;
+use super::error_regions::{ErrorRegions, SeamErrors};
 use crate::core::{Image, Result};
 
 /// Label of a pixel no patch has covered yet.
@@ -222,5 +222,55 @@ impl Canvas {
             }
         }
         map
+    }
+}
+
+impl SeamErrors for Canvas {
+    fn size(&self) -> (usize, usize) {
+        (self.width, self.height)
+    }
+
+    fn wraps(&self) -> bool {
+        self.wrap
+    }
+
+    fn seam_error(&self) -> Vec<f32> {
+        Canvas::seam_error(self)
+    }
+
+    /// Pixel `p`'s seam error, its edges' costs added in the order [`Canvas::seam_error`] adds them
+    /// (by the index of the edge's first pixel), so the value is the same to the bit.
+    fn pixel_error(&self, p: usize) -> f32 {
+        let canvas = self;
+        let (w, n) = (canvas.width, canvas.width * canvas.height);
+        let mut terms: [(usize, f32); 4] = [(usize::MAX, 0.0); 4];
+        let mut count = 0;
+        let left = if p.is_multiple_of(w) {
+            None
+        } else {
+            Some(p - 1)
+        }
+        .or_else(|| (canvas.wrap && w > 1).then(|| p + w - 1));
+        let up = if p >= w { Some(p - w) } else { None }
+            .or_else(|| (canvas.wrap && n > w).then(|| p + n - w));
+        if let Some(i) = up.filter(|&i| canvas.down(i) == Some(p)) {
+            terms[count] = (i, canvas.v_seam[i]);
+            count += 1;
+        }
+        if let Some(i) = left.filter(|&i| canvas.right(i) == Some(p)) {
+            terms[count] = (i, canvas.h_seam[i]);
+            count += 1;
+        }
+        if canvas.right(p).is_some() {
+            terms[count] = (p, canvas.h_seam[p]);
+            count += 1;
+        }
+        if canvas.down(p).is_some() {
+            terms[count] = (p, canvas.v_seam[p]);
+            count += 1;
+        }
+        // Stable: p's own two edges keep their order (right, then down).
+        terms[..count].sort_by_key(|t| t.0);
+        terms[..count].iter().fold(0.0, |e, t| e + t.1)
     }
 }

@@ -7,14 +7,27 @@
 //! step took 0.5-1 s for that alone).
 //!
 //! The first look at a covered output computes everything with the whole-output functions
-//! ([`Canvas::seam_error`] and the two passes of `box_sum::box_sums`), so it gives the same
+//! ([`SeamErrors::seam_error`] and the two passes of `box_sum::box_sums`), so it gives the same
 //! region as they do. Later updates
 //! slide the same running sums over the changed part only, starting where that part starts: a
 //! window's sum can differ from a whole-row slide in its last bit, so two windows whose totals
 //! agree to about 1e-7 may trade places.
 
-use super::canvas::Canvas;
 use crate::solvers::box_sum::{slide_window, sliding_column_sums, sliding_row_sums};
+
+/// What the error regions read of a canvas (`canvas.rs` implements it): its size, whether it
+/// wraps, and the per-pixel seam error, whole or one pixel at a time.
+pub trait SeamErrors {
+    /// Width and height.
+    fn size(&self) -> (usize, usize);
+    /// Whether the canvas wraps around (tileable output).
+    fn wraps(&self) -> bool;
+    /// The per-pixel seam error over the whole canvas.
+    fn seam_error(&self) -> Vec<f32>;
+    /// Pixel `p`'s seam error, added in the same order as [`SeamErrors::seam_error`] adds it, so
+    /// the value is the same to the bit.
+    fn pixel_error(&self, p: usize) -> f32;
+}
 
 /// Pixels whose seam error changed since the sums were brought up to date, as a box.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -30,7 +43,7 @@ struct Dirty {
 pub struct ErrorRegions {
     /// Window side the sums are for; 0 before the first computation.
     side: usize,
-    /// Per-pixel seam error (what [`Canvas::seam_error`] returns).
+    /// Per-pixel seam error (what [`SeamErrors::seam_error`] returns).
     error: Vec<f32>,
     /// Sums of `side` errors along each row from each pixel (-inf where the window would cross
     /// the border of a non-wrapping output).
@@ -66,8 +79,8 @@ impl ErrorRegions {
 
     /// The top-left corner of the `side` x `side` window of `canvas` with the largest total seam
     /// error (the first in scan order among equal ones).
-    pub fn largest(&mut self, canvas: &Canvas, side: usize) -> (usize, usize) {
-        let (w, h) = (canvas.width, canvas.height);
+    pub fn largest(&mut self, canvas: &impl SeamErrors, side: usize) -> (usize, usize) {
+        let (w, h) = (canvas.size().0, canvas.size().1);
         if self.side != side || self.error.len() != w * h {
             self.rebuild(canvas, side);
         } else if let Some(d) = self.dirty.take() {
@@ -87,24 +100,24 @@ impl ErrorRegions {
         (self.best[top], top)
     }
 
-    fn rebuild(&mut self, canvas: &Canvas, side: usize) {
-        let (w, h) = (canvas.width, canvas.height);
+    fn rebuild(&mut self, canvas: &impl SeamErrors, side: usize) {
+        let (w, h) = (canvas.size().0, canvas.size().1);
         self.side = side;
         self.dirty = None;
         self.error = canvas.seam_error();
         // The two passes of `box_sums`, keeping the row sums the updates slide from.
-        self.rows = sliding_row_sums(&self.error, w, h, side, canvas.wrap);
-        self.sums = sliding_column_sums(&self.rows, w, h, side, canvas.wrap);
+        self.rows = sliding_row_sums(&self.error, w, h, side, canvas.wraps());
+        self.sums = sliding_column_sums(&self.rows, w, h, side, canvas.wraps());
         self.best = (0..h).map(|y| self.best_in_row(w, y)).collect();
     }
 
     /// Brings the error, the row sums, the window totals and the rows' best up to date over the
     /// windows that overlap `d`.
-    fn update(&mut self, canvas: &Canvas, d: Dirty) {
-        let (w, h, side, wrap) = (canvas.width, canvas.height, self.side, canvas.wrap);
+    fn update(&mut self, canvas: &impl SeamErrors, d: Dirty) {
+        let (w, h, side, wrap) = (canvas.size().0, canvas.size().1, self.side, canvas.wraps());
         for y in d.y0..=d.y1 {
             for x in d.x0..=d.x1 {
-                self.error[y * w + x] = pixel_error(canvas, y * w + x);
+                self.error[y * w + x] = canvas.pixel_error(y * w + x);
             }
         }
         let columns = Span::reaching(d.x0, d.x1, side, w, wrap);
@@ -124,8 +137,8 @@ impl ErrorRegions {
 
     /// Row sums of row `y` for the windows starting at `columns`: a running f64 sum, as
     /// `box_sums` keeps one along the whole row.
-    fn slide_row(&mut self, canvas: &Canvas, y: usize, columns: Span) {
-        let (w, side) = (canvas.width, self.side);
+    fn slide_row(&mut self, canvas: &impl SeamErrors, y: usize, columns: Span) {
+        let (w, side) = (canvas.size().0, self.side);
         let row = &self.error[y * w..(y + 1) * w];
         let out = &mut self.rows[y * w..(y + 1) * w];
         slide_window(
@@ -134,7 +147,7 @@ impl ErrorRegions {
             |k| row[columns.at(k, w)],
             |k, total| {
                 let x = columns.at(k, w);
-                if canvas.wrap || x + side <= w {
+                if canvas.wraps() || x + side <= w {
                     out[x] = total;
                 }
             },
@@ -142,9 +155,9 @@ impl ErrorRegions {
     }
 
     /// Window totals of column `x` for the windows starting at `rows`.
-    fn slide_column(&mut self, canvas: &Canvas, x: usize, rows: Span) {
-        let (w, h, side) = (canvas.width, canvas.height, self.side);
-        if !canvas.wrap && x + side > w {
+    fn slide_column(&mut self, canvas: &impl SeamErrors, x: usize, rows: Span) {
+        let (w, h, side) = (canvas.size().0, canvas.size().1, self.side);
+        if !canvas.wraps() && x + side > w {
             return; // no window starts here: its totals stay -inf
         }
         let (row_sums, sums) = (&self.rows, &mut self.sums);
@@ -154,7 +167,7 @@ impl ErrorRegions {
             |k| row_sums[rows.at(k, h) * w + x],
             |k, total| {
                 let y = rows.at(k, h);
-                if canvas.wrap || y + side <= h {
+                if canvas.wraps() || y + side <= h {
                     sums[y * w + x] = total;
                 }
             },
@@ -207,45 +220,11 @@ impl Span {
     }
 }
 
-/// Pixel `p`'s seam error, its edges' costs added in the order [`Canvas::seam_error`] adds them
-/// (by the index of the edge's first pixel), so the value is the same to the bit.
-fn pixel_error(canvas: &Canvas, p: usize) -> f32 {
-    let (w, n) = (canvas.width, canvas.width * canvas.height);
-    let mut terms: [(usize, f32); 4] = [(usize::MAX, 0.0); 4];
-    let mut count = 0;
-    let left = if p.is_multiple_of(w) {
-        None
-    } else {
-        Some(p - 1)
-    }
-    .or_else(|| (canvas.wrap && w > 1).then(|| p + w - 1));
-    let up = if p >= w { Some(p - w) } else { None }
-        .or_else(|| (canvas.wrap && n > w).then(|| p + n - w));
-    if let Some(i) = up.filter(|&i| canvas.down(i) == Some(p)) {
-        terms[count] = (i, canvas.v_seam[i]);
-        count += 1;
-    }
-    if let Some(i) = left.filter(|&i| canvas.right(i) == Some(p)) {
-        terms[count] = (i, canvas.h_seam[i]);
-        count += 1;
-    }
-    if canvas.right(p).is_some() {
-        terms[count] = (p, canvas.h_seam[p]);
-        count += 1;
-    }
-    if canvas.down(p).is_some() {
-        terms[count] = (p, canvas.v_seam[p]);
-        count += 1;
-    }
-    // Stable: p's own two edges keep their order (right, then down).
-    terms[..count].sort_by_key(|t| t.0);
-    terms[..count].iter().fold(0.0, |e, t| e + t.1)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::core::Rng;
+    use crate::methods::graphcut::canvas::Canvas;
     use crate::solvers::box_sum::box_sums;
 
     /// The region found over the whole output, as before the sums were kept.
@@ -312,7 +291,7 @@ mod tests {
             }
             let whole = canvas.seam_error();
             for (p, &e) in whole.iter().enumerate() {
-                assert_eq!(pixel_error(&canvas, p).to_bits(), e.to_bits(), "pixel {p}");
+                assert_eq!(canvas.pixel_error(p).to_bits(), e.to_bits(), "pixel {p}");
             }
         }
     }
