@@ -23,6 +23,8 @@ stage() { # name, command...
 }
 
 stage native cargo test --tests --lib
+# The crate's documentation builds without a warning, and its examples run.
+stage doc bash -c 'RUSTDOCFLAGS="-D warnings" cargo doc --no-deps -p texsynth && cargo test --doc -p texsynth'
 stage build ./scripts/build.sh
 # The runner gives chromedriver 5 s to start by default: on a loaded 2-core machine it once took
 # longer ("driver failed to bind port during startup"), failing the stage before any test ran.

@@ -19,7 +19,7 @@ use super::canvas::Patch;
 use super::placement::Scored;
 use super::seam::SeamGraph;
 use super::source::AXES;
-use super::synthesis::Synthesis;
+use super::synthesis::{GraphSlice, Synthesis};
 use crate::methods::graphcut::anatomy::{CostSurface, GraphView};
 
 /// One slice of a placement's cost surface.
@@ -64,17 +64,6 @@ pub fn cost_slice(
         tt: chosen.tt,
         surface,
     })
-}
-
-/// One frame of a placement's seam graph.
-#[derive(Debug, Clone, PartialEq)]
-pub struct GraphSlice {
-    /// The canvas frame shown.
-    pub t: usize,
-    /// The patch's box in the output: its first frame and frame count.
-    pub first_frame: usize,
-    pub frames: usize,
-    pub view: GraphView,
 }
 
 impl Synthesis {

@@ -12,12 +12,13 @@
 
 use std::collections::HashSet;
 
-use super::anatomy::{CostSlice, GraphSlice, cost_slice};
+use super::anatomy::{CostSlice, cost_slice};
 use super::budget::WorkingSet;
 use super::canvas::{Canvas, Patch, UNCOVERED};
 use super::options::{Mode, Options, Placement};
 use super::placement::{Allowed, Region, draw_offset, region_around};
 use super::source::Source;
+use super::synthesis::GraphSlice;
 use super::synthesis::Synthesis;
 use super::transition::{Transition, best_transition, half_window};
 use super::volume::Volume;

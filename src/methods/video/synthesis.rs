@@ -4,7 +4,19 @@
 
 use super::canvas::{Canvas, Patch, UNCOVERED};
 use super::source::{Axis, Source};
+use crate::methods::graphcut::anatomy::GraphView;
 use crate::methods::graphcut::cost::{Sample, match_cost};
+
+/// One frame of a placement's seam graph.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GraphSlice {
+    /// The canvas frame shown.
+    pub t: usize,
+    /// The patch's box in the output: its first frame and frame count.
+    pub first_frame: usize,
+    pub frames: usize,
+    pub view: GraphView,
+}
 
 /// Sources and canvas of one video synthesis.
 pub struct Synthesis {
@@ -15,7 +27,7 @@ pub struct Synthesis {
     /// Whether placements keep a frame of their graph for the page's placement anatomy, and the
     /// last one kept.
     pub record_anatomy: bool,
-    pub last_graph: Option<super::anatomy::GraphSlice>,
+    pub last_graph: Option<GraphSlice>,
     /// The max-flow graph, reset at every placement so its buffers keep their memory (as in
     /// graph-cut textures).
     pub graph: crate::solvers::maxflow::Graph,
