@@ -2,12 +2,14 @@
 //! are validated here and every failure becomes a JS `Error` whose message names the problem.
 
 mod anatomy;
+mod brush;
 mod design;
 mod error;
 mod exemplar;
 mod features;
 mod flow;
 mod graphcut;
+mod layers;
 mod merge;
 mod object;
 mod optimization;
@@ -18,13 +20,13 @@ mod schema;
 mod session;
 mod video;
 
-pub use design::{
-    LayerDesign, TextureBrush, TileableTexture, deform_texture, deformation_set, make_tileable,
-};
+pub use brush::TextureBrush;
+pub use design::{TileableTexture, deform_texture, deformation_set, make_tileable};
 pub use exemplar::Exemplar;
 pub use features::{FeatureMap, FeatureSynthesis, detect_features, measure_broken_features};
 pub use flow::{FlowAnimation, flow_field};
 pub use graphcut::GraphcutTextures;
+pub use layers::LayerDesign;
 pub use merge::GraphcutMerge;
 pub use optimization::TextureOptimization;
 pub use quality::measure_quality;
@@ -54,8 +56,8 @@ pub fn schema() -> js_sys::Array {
         &design::RANGE_SCHEMA,
         &design::RANGES_SCHEMA,
         &design::TILEABLE_SCHEMA,
-        &design::BRUSH_SCHEMA,
-        &design::LAYER_SCHEMA,
+        &brush::BRUSH_SCHEMA,
+        &layers::LAYER_SCHEMA,
         &features::DETECT_SCHEMA,
         &features::SCHEMA,
         &video::SCHEMA,

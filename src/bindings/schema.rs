@@ -100,6 +100,26 @@ pub const fn output_size(
     }
 }
 
+/// A boolean option with its default.
+pub const fn boolean(key: &'static str, default: &'static str, doc: &'static str) -> Opt {
+    Opt {
+        key,
+        kind: Kind::Boolean,
+        default: Some(default),
+        doc,
+    }
+}
+
+/// A number option (ranges are the method's to check).
+pub const fn number(key: &'static str, default: Option<&'static str>, doc: &'static str) -> Opt {
+    Opt {
+        key,
+        kind: Kind::Number,
+        default,
+        doc,
+    }
+}
+
 /// `memoryBudgetMiB`, which every session that allocates by its options takes.
 pub const MEMORY_BUDGET: Opt = Opt {
     key: "memoryBudgetMiB",
