@@ -85,7 +85,7 @@ pub fn region_contains(region: Region, x: usize, y: usize, w: usize, h: usize, w
 /// The part of the output a placement's search looks at: every offset whose patch covers the
 /// error region lies in `[x1 - pw, x0]` along x (likewise y), so its patches span a window of
 /// `2 pw - region width` by `2 ph - region height` pixels. Searching that window instead of the
-/// whole output makes a placement cost the same at 256x256 and 4096x4096 (issue 17). A wrapping
+/// whole output makes a placement cost the same at 256x256 and 4096x4096. A wrapping
 /// output whose window would be wider than the output itself is searched whole, as a torus.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct SearchWindow {

@@ -278,7 +278,7 @@ fn same_seed_same_output() {
     assert_ne!(a, c);
 }
 
-/// The search looks only at the window the candidates' patches can reach (issue 17): on outputs
+/// The search looks only at the window the candidates' patches can reach: on outputs
 /// much larger than that window, wrapping or not, before and after the output is covered, for
 /// entire-patch and sub-patch matching, every candidate's cost is the direct area-normalised SSD
 /// over the whole output.
