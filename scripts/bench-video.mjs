@@ -3,7 +3,7 @@
 // scripts/make-demo-clip.mjs): a 128x128x60 loop (goal: at most 10 s) and a spatial extension of
 // 96x96x30 to 192x192x60 (goal: at most 30 s), with random and matching placement. Needs pkg/
 // (./scripts/build.sh). The 3-D FFT search against direct SSD is in the native
-// `cargo run --profile explore --example video_bench`.
+// `cargo run --profile explore -p texsynth-bench --bin video_bench`.
 //   node scripts/bench-video.mjs [--seed 1]
 import { readFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';

@@ -11,10 +11,10 @@ cd "$(dirname "$0")/.."
 SEARCHES="${SEARCHES:-patchmatch,kmeans-tree,exact}"
 SAMPLES="${SAMPLES:-gravel_128,gravel_64}"
 ./scripts/build.sh >/dev/null
-cargo build --release --examples 2>/dev/null
-BENCH_SAMPLES="$SAMPLES" ./target/release/examples/bench ${SEARCHES//,/ }
+cargo build --release -p texsynth-bench --bins 2>/dev/null
+BENCH_SAMPLES="$SAMPLES" ./target/release/bench ${SEARCHES//,/ }
 echo
-BENCH_SAMPLES="$SAMPLES" ./target/release/examples/bench_graphcut
+BENCH_SAMPLES="$SAMPLES" ./target/release/bench_graphcut
 echo
 node scripts/bench.mjs --samples "$SAMPLES" --searches "$SEARCHES"
 echo

@@ -20,7 +20,7 @@ test('same seed and options: the same bytes on a second run in the same instance
 
 test('native and wasm give byte-identical outputs', { timeout: 900_000 }, () => {
   // Built in the dev profile that `cargo test` has already compiled the library in.
-  const stdout = execFileSync('cargo', ['run', '--quiet', '--example', 'determinism_hashes'], {
+  const stdout = execFileSync('cargo', ['test', '--quiet', '--test', 'determinism_hashes'], {
     cwd: ROOT, encoding: 'utf8', stdio: ['ignore', 'pipe', 'inherit'],
   });
   const native = Object.fromEntries(stdout.trim().split('\n').map((line) => line.split(' ')));

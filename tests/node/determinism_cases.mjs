@@ -1,4 +1,4 @@
-// The determinism cases, the same names, samples and options as examples/determinism_hashes.rs
+// The determinism cases, the same names, samples and options as tests/determinism_hashes.rs
 // (the native side): keep the two lists in step. Small enough to run in a few seconds.
 import { api, sampleBytes } from './fixtures.mjs';
 

@@ -1,5 +1,5 @@
 //! Native benchmark of graph-cut video textures (section 7):
-//! `cargo run --profile explore --example video_bench`. On a procedural wave clip it times a
+//! `cargo run --profile explore -p texsynth-bench --bin video_bench`. On a procedural wave clip it times a
 //! 128x128x60 loop (7.A), a spatial extension of 96x96x30 to 192x192x60 (7.E with 7.D), and the
 //! 3-D FFT SSD search against a direct SSD on a small volume (correctness and speed).
 //! `scripts/bench-video.mjs` runs the first two as wasm in Node.

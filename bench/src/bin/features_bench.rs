@@ -1,5 +1,5 @@
 //! Feature-guided synthesis (graph-cut placement) at one output size, for profiling how its
-//! cost grows with the output: `cargo run --profile explore --example features_bench -- SAMPLE
+//! cost grows with the output: `cargo run --profile explore -p texsynth-bench --bin features_bench -- SAMPLE
 //! SIZE` (tiles_128, 1024). Prints the set-up time, then the time of every tenth of the steps.
 
 use std::time::Instant;

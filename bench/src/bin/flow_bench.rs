@@ -1,4 +1,4 @@
-//! Native timing of flow animation frames: `cargo run --profile explore --example flow_bench --
+//! Native timing of flow animation frames: `cargo run --profile explore -p texsynth-bench --bin flow_bench --
 //! [SAMPLE] [SIZE] [FRAMES]` (defaults: `tiles_128 512 8`, a vortex of strength 2, the default
 //! options). Prints the first frame's time and the frames per second of the frames after it,
 //! the figure the scaling table's flow row gives for wasm. No quality is measured (see

@@ -3,7 +3,7 @@
 //! same samples, same options) in the wasm package and compares the lines. Keep the two lists
 //! in step; a case missing on either side fails the test.
 //!
-//! `cargo run --example determinism_hashes`
+//! `cargo test --test determinism_hashes`
 
 use texsynth::core::{Image, decode, to_rgba8};
 use texsynth::methods::design::Deformation;

@@ -1,4 +1,4 @@
-//! Native benchmark of texture optimisation: `cargo run --release --example bench [-- SEARCH...]`.
+//! Native benchmark of texture optimisation: `cargo run --release -p texsynth-bench --bin bench [-- SEARCH...]`.
 //! Synthesises 256x256 (`BENCH_SIZE=1024`: 1024x1024) from the 128x128 and 64x64 samples with each search and prints total time,
 //! time per step (median, max), final energy and the search used. `scripts/bench.sh` runs this and
 //! the same cases as wasm in Node. `BENCH_WRITE=dir` also writes each output as a PNG;

@@ -1,4 +1,4 @@
-//! Every method with a camera-sized exemplar (issue 17): `cargo run --release --example
+//! Every method with a camera-sized exemplar: `cargo run --release -p texsynth-bench --bin
 //! large_exemplar`. Builds a 4000x3000 exemplar (a mosaic of the 128x128 samples, bilinearly
 //! upscaled 4x with a gentle brightness ramp so no two tiles repeat exactly) and runs each method
 //! to done at 512x512 (a couple of frames for flow; texture design's tileable and global

@@ -1,4 +1,4 @@
-//! Native benchmark of graph-cut textures: `cargo run --release --example bench_graphcut`.
+//! Native benchmark of graph-cut textures: `cargo run --release -p texsynth-bench --bin bench_graphcut`.
 //! Synthesises 256x256 from the samples with each placement mode and prints total time, time per
 //! placement (median, max), patches placed and the final total seam cost. `BENCH_SIZE=1024` and
 //! `BENCH_PLACEMENTS=entire-patch,sub-patch` pick the output size and placements. `scripts/bench.sh` runs

@@ -1,4 +1,4 @@
-//! Texture design (Shen et al. 2009) timings, native: `cargo run --release --example
+//! Texture design (Shen et al. 2009) timings, native: `cargo run --release -p texsynth-bench --bin
 //! design_bench` (the wasm figures come from `scripts/bench-design.mjs`). Prints
 //! - layer-based design at 360x360 with patches of 32, 64 and 92 (Table 2), QTP against
 //!   exhaustive search on the same layout, always taking the best match so both make the same
