@@ -1,6 +1,6 @@
 // Two builds of the package against each other in one Node process, for a speed change on a
-// noisy machine: runs in separate processes minutes apart moved by 1.3-1.5x on the 2-core VM this
-// was written on, far more than the few per cent a change is worth; runs of the two builds
+// noisy machine: runs in separate processes minutes apart can differ by 1.3-1.5x on a 2-core VM,
+// far more than the few per cent a change is worth; runs of the two builds
 // interleaved in one process share whatever the machine is doing at that moment.
 //   node scripts/bench-ab.mjs DIR_A DIR_B [--method subpatch] [--size 512] [--runs 8]
 // DIR_A and DIR_B each hold a built package (texsynth.js and texsynth_bg.wasm, as `pkg/` after

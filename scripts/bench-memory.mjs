@@ -1,4 +1,4 @@
-// Peak wasm memory per method against the constructor's estimate (issue 17, item 4):
+// Peak wasm memory per method against the constructor's estimate:
 //   node scripts/bench-memory.mjs [--sizes 1024,2048] [--methods optimization,graphcut,...]
 //                                 [--big optimization,graphcut] [--skip flow:2048,...] [--budget 3584]
 // Each case runs in a fresh Node process (wasm memory never shrinks, so the peak of a run is

@@ -1,10 +1,10 @@
-// How time and memory grow (issue 17, item 5): every method as wasm in Node, one fresh process
+// How time and memory grow: every method as wasm in Node, one fresh process
 // per case (wasm memory never shrinks, so a run's peak is the memory's size after it).
 //   node scripts/bench-scaling.mjs [--outputs 256,512,1024,2048,4096] [--exemplars 64,128,256,512,1024,3000]
 //                                  [--methods optimization,graphcut,subpatch,features,flow]
 //                                  [--svg www/scaling.svg] [--repeat 1]
 // Output sweep: the 128x128 www/samples/tiles_128.png to each square output size, up to each
-// method's LARGEST (4096 for every method since 2026-12-02: flow animation's 4096x4096 case takes
+// method's LARGEST (4096 for every method: flow animation's 4096x4096 case takes
 // about 3 minutes, the whole run about 9). Exemplar sweep: gravel (the 512x512
 // ../shared/textures/gravel_full.png, shrunk with Exemplar.resized below 512 and mirror-tiled
 // above it) to a 256x256 output. Flow animation is timed per frame after the first (frames per

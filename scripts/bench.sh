@@ -6,8 +6,30 @@
 # layer-based design with QTP against exhaustive search, tileable textures, a brush stroke). The exact search takes minutes on the
 # 128x128 sample; choose searches with SEARCHES=patchmatch,kmeans-tree and samples with
 # SAMPLES=gravel_128,gravel_64 (the defaults: all three searches, gravel 128 and 64).
+#
+# ./scripts/bench.sh --write-docs [options of compare.sh] rewrites docs/benchmarks.md whole (and
+# the README's headline rows): the comparison with the peer (./scripts/compare.sh, default: the
+# samples at 256x256, seeds 1-3) and the scaling tables (node scripts/bench-scaling.mjs with
+# $SCALING_ARGS, default the output sweep to 1024x1024 without the exemplar sweep).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+if [ "${1:-}" = --write-docs ]; then
+  shift
+  out=results/compare
+  prev=""
+  for arg in "$@"; do
+    [ "$prev" = --out ] && out="$arg"
+    prev="$arg"
+  done
+  ./scripts/compare.sh "$@"
+  scaling="$(mktemp)"
+  # shellcheck disable=SC2086
+  node scripts/bench-scaling.mjs ${SCALING_ARGS:---outputs 256,512,1024 --exemplars none} | grep -E '^(\||$)' > "$scaling"
+  node scripts/write-benchmarks.mjs "$out/results.json" "$scaling" \
+    --command "./scripts/bench.sh --write-docs $* (SCALING_ARGS: ${SCALING_ARGS:---outputs 256,512,1024 --exemplars none})"
+  rm -f "$scaling"
+  exit 0
+fi
 SEARCHES="${SEARCHES:-patchmatch,kmeans-tree,exact}"
 SAMPLES="${SAMPLES:-gravel_128,gravel_64}"
 ./scripts/build.sh >/dev/null

@@ -22,7 +22,9 @@ node scripts/make-typings.mjs pkg
 # The hand-written entry points, types, worker wrapper and CLI (www/package/) beside the generated files.
 cp www/package/*.js www/package/*.d.ts pkg/
 chmod +x pkg/cli.js
-cp README.md pkg/README.md
+# The package's own README (the npm page, from README.md) and the licences.
+node scripts/make-package-readme.mjs pkg
+cp LICENSE-MIT LICENSE-APACHE pkg/
 raw=$(stat -c %s pkg/texsynth_bg.wasm)
 gz=$(gzip -9 -c pkg/texsynth_bg.wasm | wc -c)
 echo "build: pkg/texsynth_bg.wasm is $raw bytes ($gz gzipped)"

@@ -1,13 +1,19 @@
 // Writes pkg/schema.d.ts, the TypeScript declarations of every option object and event, from
 // the tables the bindings read options and build events with (src/bindings/schema.rs), so the
 // declarations cannot disagree with the code. Run by scripts/build.sh after wasm-bindgen.
+// With --docs it also rewrites the generated reference in docs/api.md (every class's options and
+// event fields, scripts/lib/api-reference.mjs).
 //
-//   node scripts/make-typings.mjs [pkg]
+//   node scripts/make-typings.mjs [pkg] [--docs]
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
-const pkg = resolve(process.argv[2] ?? 'pkg');
+import { apiReference, withReference } from './lib/api-reference.mjs';
+
+const args = process.argv.slice(2);
+const docs = args.includes('--docs');
+const pkg = resolve(args.find((a) => !a.startsWith('--')) ?? 'pkg');
 const lib = await import(pathToFileURL(join(pkg, 'texsynth.js')).href);
 lib.initSync({ module: readFileSync(join(pkg, 'texsynth_bg.wasm')) });
 
@@ -59,3 +65,8 @@ for (const s of lib.__schema()) {
 }
 writeFileSync(join(pkg, 'schema.d.ts'), out.join('\n'));
 console.log(`make-typings: ${join(pkg, 'schema.d.ts')}`);
+if (docs) {
+  const path = new URL('../docs/api.md', import.meta.url).pathname;
+  writeFileSync(path, withReference(readFileSync(path, 'utf8'), apiReference(lib.__schema())));
+  console.log(`make-typings: ${path}`);
+}

@@ -1,11 +1,13 @@
-// A tiny static server for the demo page: / is www/, /pkg/ is the built package. No dependencies.
-// Run directly (`node scripts/serve.mjs [port]`) or import `startServer` from tests.
+// A plain static server for a folder (default site/, the page as ./scripts/build-site.sh writes
+// it): what any static host does, with the content types the page needs. No dependencies.
+// Run directly (`node scripts/serve.mjs [port] [folder]`) or import `startServer` from tests.
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
 import { extname, join, normalize, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const ROOT = resolve(fileURLToPath(import.meta.url), '../..');
+export const SITE = join(ROOT, 'site');
 const TYPES = {
   '.html': 'text/html; charset=utf-8',
   '.js': 'text/javascript; charset=utf-8',
@@ -15,20 +17,19 @@ const TYPES = {
   '.wasm': 'application/wasm',
   '.png': 'image/png',
   '.jpg': 'image/jpeg',
+  '.svg': 'image/svg+xml',
   '.md': 'text/markdown; charset=utf-8',
-  '.ts': 'text/plain; charset=utf-8',
 };
 
-function filePath(urlPath) {
+function filePath(root, urlPath) {
   const path = normalize(decodeURIComponent(urlPath.split('?')[0]));
   if (path.includes('..')) return null;
-  if (path.startsWith('/pkg/')) return join(ROOT, path);
-  return join(ROOT, 'www', path.endsWith('/') ? path + 'index.html' : path);
+  return join(root, path.endsWith('/') ? path + 'index.html' : path);
 }
 
-export function startServer({ port = 8080, host = '127.0.0.1' } = {}) {
+export function startServer({ port = 8080, host = '127.0.0.1', root = SITE } = {}) {
   const server = createServer(async (req, res) => {
-    const path = filePath(req.url);
+    const path = filePath(root, req.url);
     try {
       if (!path || !(await stat(path)).isFile()) throw new Error('not a file');
       const body = await readFile(path);
@@ -50,7 +51,8 @@ export function startServer({ port = 8080, host = '127.0.0.1' } = {}) {
 
 if (process.argv[1] === fileURLToPath(import.meta.url)) {
   const port = Number(process.argv[2] ?? process.env.PORT ?? 8080);
-  const server = await startServer({ port });
+  const root = resolve(process.argv[3] ?? SITE);
+  const server = await startServer({ port, root });
   const { address, port: bound } = server.address();
-  console.log(`serving the demo at http://${address}:${bound}/  (Ctrl-C to stop)`);
+  console.log(`serving ${root} at http://${address}:${bound}/  (Ctrl-C to stop)`);
 }

@@ -23,11 +23,14 @@ stage() { # name, command...
 }
 
 stage native cargo test --tests --lib
-# The crate's documentation builds without a warning, and its examples run.
-stage doc bash -c 'RUSTDOCFLAGS="-D warnings" cargo doc --no-deps -p texsynth && cargo test --doc -p texsynth'
-stage build ./scripts/build.sh
-# The runner gives chromedriver 5 s to start by default: on a loaded 2-core machine it once took
-# longer ("driver failed to bind port during startup"), failing the stage before any test ran.
+# The crate's documentation builds without a warning, its examples and the README's Rust quick
+# start run as doc tests, and every numbered example in examples/ runs on its defaults.
+stage doc bash -c 'RUSTDOCFLAGS="-D warnings" cargo doc --no-deps -p texsynth && cargo test --doc -p texsynth &&
+  for e in examples/[0-9]*.rs; do cargo run -q --example "$(basename "$e" .rs)" >/dev/null || { echo "example $e failed"; exit 1; }; done && echo "examples: all ran"'
+# The package, and the static page the browser tests open (site/, served as any static host would).
+stage build bash -c './scripts/build.sh && ./scripts/build-site.sh'
+# The runner gives chromedriver 5 s to start by default: on a loaded 2-core machine it can take
+# longer ("driver failed to bind port during startup"), failing the stage before any test runs.
 export WASM_BINDGEN_TEST_DRIVER_TIMEOUT=${WASM_BINDGEN_TEST_DRIVER_TIMEOUT:-30}
 stage wasm cargo test --target wasm32-unknown-unknown --tests
 # The package in Node: the bad-input corpus, the leak test, determinism (tests/node/).

@@ -6,9 +6,10 @@
 //! (Wu & Yu 2004). The same code is the npm package `texsynth-wasm` when compiled to
 //! WebAssembly.
 //!
-//! Every method is a module with `Options` (plain data with the papers' defaults), a `Session`
-//! built from an exemplar and the options, and the `Event` each step returns; every session
-//! implements the [`Session`] trait.
+//! Every method is a module with `Options` (plain data; where a default differs from its paper,
+//! the method's page in `docs/methods/` says so and why), a `Session` built from an exemplar and
+//! the options, and the `Event` each step returns; every session implements the [`Session`]
+//! trait.
 //!
 //! ```
 //! use texsynth::{Image, Session, graphcut};
@@ -115,3 +116,8 @@ pub mod design {
         };
     }
 }
+
+// The README's Rust quick start, compiled and run as a doc test.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeQuickStart;

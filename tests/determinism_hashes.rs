@@ -141,8 +141,8 @@ fn main() {
     for name in ["gravel_64", "tiles_64", "brick_64", "grass_64"] {
         println!("optimization/{name} {:08x}", optimization(name, Pixels, 48));
     }
-    // The default schedule and IRLS weights (r = 0.8, powf in every E-step): these differed
-    // between native and wasm until the robust weights went through core::math.
+    // The default schedule and IRLS weights (r = 0.8, powf in every E-step): the robust weights
+    // go through core::math, so these agree between native and wasm.
     for name in ["carpet_64", "squares_64"] {
         println!(
             "optimization-default/{name} {:08x}",

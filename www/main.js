@@ -165,7 +165,7 @@ function syncUrl() {
   });
   if (query !== location.search) {
     window.history.replaceState(null, '', query + location.hash);
-    $('share-status').textContent = ''; // "link copied" was about the link before this change
+    $('share-status').textContent = ''; // "link copied" was about the previous link
   }
   $('share-link').value = location.href;
 }

@@ -1,4 +1,4 @@
-//! The memory budget every session checks in its constructor (issue 17, item 4).
+//! The memory budget every session checks in its constructor.
 //!
 //! A wasm32 instance addresses at most 4 GiB, its memory never shrinks, and a step that cannot
 //! grow it traps with "out of memory" half-way through a run. So each session counts what it will

@@ -1,5 +1,5 @@
 //! A power x^y for the hot loops that need many of them at modest accuracy: the IRLS weights of
-//! texture optimisation, one per grid node per iteration (`powf` from `libm` was 4% of a flow
+//! texture optimisation, one per grid node per iteration (`powf` from `libm` would be 4% of a flow
 //! frame's time at 512x512). It is plain arithmetic on the float's bits, so every target gives
 //! the same result, bit for bit, as [`super::math`] requires of anything that feeds an output.
 

@@ -176,7 +176,7 @@ pub fn shift(image: &Image, dx: f32, dy: f32, edge: Edge) -> Image {
 }
 
 /// One pass of [`shift`]: every value moved by `d` along x (`along_x`) or y. A plain loop over
-/// the values: it runs once per exemplar, and unrolled per channel it took 14 KB of wasm.
+/// the values: it runs once per exemplar, and unrolled per channel it would take 14 KB of wasm.
 fn shift_axis(
     src: &[f32],
     (w, h, c): (usize, usize, usize),

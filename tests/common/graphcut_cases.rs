@@ -187,7 +187,7 @@ fn a_huge_output_is_refused_by_the_constructor_naming_the_budget() {
     assert!(msg.starts_with("invalid memoryBudgetMiB"), "{msg}");
 }
 
-/// A photo larger than 512 a side is accepted (issue 17): each placement copies a window of at
+/// A photo larger than 512 a side is accepted: each placement copies a window of at
 /// most 512x512 of it, drawn afresh, so its steps cost what a 512x512 exemplar's do.
 #[wasm_bindgen_test]
 fn a_graphcut_session_accepts_a_large_exemplar() {

@@ -1,4 +1,4 @@
-// Placement anatomy (issue 16, point 2) in headless Chromium: with the view on, each graph-cut
+// Placement anatomy in headless Chromium: with the view on, each graph-cut
 // placement shows its cost surface with the drawn offset among the cheapest, the probabilities
 // of eq. 3, and the seam graph with a minimum cut; the hover readout names a pixel's arcs.
 import { test, before, after } from 'node:test';

@@ -1,4 +1,4 @@
-// The "Compare" panel (issue 16, point 5): one exemplar and seed through texture optimization,
+// The "Compare" panel: one exemplar and seed through texture optimization,
 // graph cut and feature-guided synthesis side by side, then plain against wavelet energies; each
 // result with its quality metrics and wall time; the history scrubs all canvases together.
 import { test, before, after } from 'node:test';
@@ -59,7 +59,7 @@ test('three methods side by side, each with metrics and time', async () => {
   assert.deepEqual(table.map((r) => r.name), ['Texture optimization', 'Graph cut', 'Feature-guided']);
   for (let c = 0; c < 5; c++) assert.ok(table.some((r) => r.cells[c].best), `column ${c} has a best`);
   assert.match(table[0].cells[0].text, /^\d\.\de-\d$/);
-  // The detail metric (issue 10): each method's flat fraction as on its card, the one nearest
+  // The detail metric: each method's flat fraction as on its card, the one nearest
   // the exemplar's own 10% in bold.
   const flats = shown.map((f) => f.flat);
   table.forEach((r, i) => assert.equal(r.cells[3].text, `${(flats[i] * 100).toFixed(1)}%`, r.name));

@@ -1,4 +1,4 @@
-// Failure is visible on the page and leaves it usable (issue 15): uploads that are empty, cut
+// Failure is visible on the page and leaves it usable: uploads that are empty, cut
 // short or lie about their size each show the library's readable message and keep the exemplar;
 // a session the worker refuses (a 1x1 exemplar) shows its message; then a good upload works,
 // the message goes away, and no uncaught error reached the console.

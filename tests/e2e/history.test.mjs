@@ -1,4 +1,4 @@
-// The step history (issue 16, point 3): the store stays within its budget and keeps the run
+// The step history: the store stays within its budget and keeps the run
 // covered; the scrubber, worked from the keyboard, puts back exactly the pixels drawn at that
 // step and moves the energy plot's marker; scrubbing while paused leaves the run as it was.
 import { test, before, after } from 'node:test';

@@ -1,4 +1,4 @@
-// Usable by everyone (issue 16, point 7): keyboard only (Tab, arrows, Enter, Space; no clicks)
+// Usable by everyone: keyboard only (Tab, arrows, Enter, Space; no clicks)
 // picks a sample, selects a method in the tablist and runs it to done; every control of every
 // panel has an accessible name (from Chromium's accessibility tree); focus is visible.
 import { test, before, after } from 'node:test';

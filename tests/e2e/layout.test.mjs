@@ -1,4 +1,4 @@
-// The layout on a 1280x720 projector and on a 390x844 phone (issue 16, point 7): after a short
+// The layout on a 1280x720 projector and on a 390x844 phone: after a short
 // run of texture optimization, graph cut and the compare panel, nothing is wider than the
 // viewport (document.scrollWidth <= innerWidth), and no console errors. The screenshots
 // (test-results/layout-*.png) are for a person to look at.

@@ -9,7 +9,7 @@ import { execFileSync } from 'node:child_process';
 import { cpSync, existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { tmpdir } from 'node:os';
-import { extname, join } from 'node:path';
+import { dirname, extname, join } from 'node:path';
 import { chromium } from 'playwright-core';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
@@ -118,15 +118,10 @@ test('CLI: synth, synth --jobs, animate, measure, --json, --help, and errors tha
 
 const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm', '.png': 'image/png' };
 
-test('Vite: a production build of an app that imports the package runs in headless Chromium', async () => {
-  const viteApp = join(app, 'vite-app');
-  cpSync(SAMPLE, join(viteApp, 'sand_64.png'));
-  run('node', [join(ROOT, 'node_modules/vite/bin/vite.js'), 'build', '--logLevel', 'warn'], viteApp, { env: { ...process.env, NODE_PATH: '' } });
-  const dist = join(viteApp, 'dist');
-  const assets = readdirSync(join(dist, 'assets'));
-  assert.ok(assets.some((f) => f.endsWith('.wasm')), `no .wasm asset in ${assets}`);
+/** A plain static server over `dir` (index.html at /), closed by the returned function. */
+async function serveStatic(dir) {
   const server = createServer((req, res) => {
-    const path = join(dist, req.url === '/' ? 'index.html' : decodeURIComponent(req.url.split('?')[0]));
+    const path = join(dir, req.url === '/' ? 'index.html' : decodeURIComponent(req.url.split('?')[0]));
     try {
       const body = readFileSync(path);
       res.writeHead(200, { 'content-type': TYPES[extname(path)] ?? 'application/octet-stream' });
@@ -137,15 +132,28 @@ test('Vite: a production build of an app that imports the package runs in headle
     }
   });
   await new Promise((r) => server.listen(0, '127.0.0.1', r));
-  const browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-    args: ['--no-sandbox', '--disable-gpu', '--disable-dev-shm-usage', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
-  });
+  return { url: `http://127.0.0.1:${server.address().port}/`, close: () => server.close() };
+}
+
+const launch = () => chromium.launch({
+  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+  args: ['--no-sandbox', '--disable-gpu', '--disable-dev-shm-usage', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
+});
+
+test('Vite: a production build of an app that imports the package runs in headless Chromium', async () => {
+  const viteApp = join(app, 'vite-app');
+  cpSync(SAMPLE, join(viteApp, 'sand_64.png'));
+  run('node', [join(ROOT, 'node_modules/vite/bin/vite.js'), 'build', '--logLevel', 'warn'], viteApp, { env: { ...process.env, NODE_PATH: '' } });
+  const dist = join(viteApp, 'dist');
+  const assets = readdirSync(join(dist, 'assets'));
+  assert.ok(assets.some((f) => f.endsWith('.wasm')), `no .wasm asset in ${assets}`);
+  const server = await serveStatic(dist);
+  const browser = await launch();
   try {
     const page = await browser.newPage();
     const errors = [];
     page.on('pageerror', (e) => errors.push(e.message));
-    await page.goto(`http://127.0.0.1:${server.address().port}/`);
+    await page.goto(server.url);
     await page.waitForSelector('body[data-result]', { timeout: 30_000 }).catch(() => assert.fail(errors.join('\n') || 'no result'));
     const result = JSON.parse(await page.evaluate(() => document.body.dataset.result));
     assert.deepEqual(result, { version: JSON.parse(readFileSync(join(ROOT, 'pkg.json'), 'utf8')).version, done: true, alpha: 255, workerDone: true });
@@ -154,4 +162,95 @@ test('Vite: a production build of an app that imports the package runs in headle
     await browser.close();
     server.close();
   }
+});
+
+// The README's quick starts, as written there: each block follows a `<!-- quickstart: FILE -->`
+// line and is run from the installed tarball with a sample exemplar as `sample.png`.
+const quickStarts = () => {
+  const readme = readFileSync(join(ROOT, 'README.md'), 'utf8');
+  const blocks = {};
+  for (const [, file, code] of readme.matchAll(/<!-- quickstart: (\S+) -->\n```\w*\n([\s\S]*?)```/g)) blocks[file] = code;
+  return blocks;
+};
+
+/** The README's `file` written into a fresh folder of the scratch app, with `sample.png` beside it. */
+function quickStart(file) {
+  const code = quickStarts()[file];
+  assert.ok(code, `the README has a quick start ${file}`);
+  const dir = join(app, 'readme', file.replace(/[/.]/g, '-'));
+  mkdirSync(join(dir, dirname(file)), { recursive: true });
+  writeFileSync(join(dir, file), code);
+  cpSync(SAMPLE, join(dir, dirname(file), 'sample.png'));
+  return dir;
+}
+
+/** Whether the canvas of the page at `url` is drawn, opaque, at its centre within a minute. */
+async function pageDraws(url) {
+  const browser = await launch();
+  try {
+    const page = await browser.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    await page.goto(url);
+    await page.waitForFunction(() => {
+      const c = document.querySelector('canvas');
+      return c.getContext('2d').getImageData(c.width / 2, c.height / 2, 1, 1).data[3] === 255;
+    }, null, { timeout: 60_000 }).catch(() => assert.fail(errors.join('\n') || 'the canvas stayed empty'));
+    assert.deepEqual(errors, []);
+  } finally {
+    await browser.close();
+  }
+}
+
+test('README: every environment has its quick start', () => {
+  assert.deepEqual(Object.keys(quickStarts()).sort(), ['cli.sh', 'node.mjs', 'page.html', 'vite/main.js', 'worker.mjs']);
+});
+
+test('README quick start: Node writes its texture', () => {
+  const dir = quickStart('node.mjs');
+  const log = run('node', ['node.mjs'], dir);
+  assert.match(log, /^level 0 /m);
+  assert.ok(readFileSync(join(dir, 'out.png')).length > 1000);
+});
+
+test('README quick start: Workers run a session and a pool', () => {
+  const dir = quickStart('worker.mjs');
+  const log = run('node', ['worker.mjs'], dir);
+  assert.match(log, /^placed \d+$/m);
+  assert.match(log.trim().split('\n').at(-1), /\[ 96, 96 \]/);
+});
+
+test('README quick start: the command line makes, tiles, animates and measures', () => {
+  const dir = quickStart('cli.sh');
+  run('bash', ['-e', 'cli.sh'], dir);
+  for (const file of ['out.png', 'tile.png', 'frames/frame-0003.png']) assert.ok(existsSync(join(dir, file)), file);
+});
+
+test('README quick start: a page without a bundler draws the texture', async () => {
+  const dir = quickStart('page.html');
+  cpSync(join(app, 'node_modules/texsynth-wasm'), join(dir, 'node_modules/texsynth-wasm'), { recursive: true });
+  const server = await serveStatic(dir);
+  try {
+    await pageDraws(`${server.url}page.html`);
+  } finally {
+    server.close();
+  }
+});
+
+test('README quick start: the Vite build draws the texture', async () => {
+  const dir = quickStart('vite/main.js');
+  writeFileSync(join(dir, 'vite/index.html'), '<!doctype html><canvas width="128" height="128"></canvas><script type="module" src="./main.js"></script>');
+  run('node', [join(ROOT, 'node_modules/vite/bin/vite.js'), 'build', '--logLevel', 'warn'], join(dir, 'vite'), { env: { ...process.env, NODE_PATH: '' } });
+  const server = await serveStatic(join(dir, 'vite/dist'));
+  try {
+    await pageDraws(server.url);
+  } finally {
+    server.close();
+  }
+});
+
+test('npm publish --dry-run accepts the package', () => {
+  const out = JSON.parse(npm(['publish', '--dry-run', '--json'], join(ROOT, 'pkg')));
+  assert.equal(out.name, 'texsynth-wasm');
+  for (const file of ['LICENSE-MIT', 'LICENSE-APACHE', 'README.md']) assert.ok(out.files.some((f) => f.path === file), file);
 });

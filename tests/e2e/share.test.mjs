@@ -1,4 +1,4 @@
-// Shareable state (issue 16, point 6): the URL follows the sample, method, seed, size and every
+// Shareable state: the URL follows the sample, method, seed, size and every
 // option; the link the "Copy link" button puts on the clipboard, opened in a fresh page, restores
 // all of it and reproduces the same output pixels; without a clipboard the link is shown
 // selected; a stage tab inside the options (texture design) comes back from the URL too.

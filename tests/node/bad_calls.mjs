@@ -209,7 +209,7 @@ export const BAD_CALLS = [
   ['renderOffsetMapInto: short', () => new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16 }).renderOffsetMapInto(new Uint8ClampedArray(4)), /target pixel array|step/],
   ['FlowAnimation.flowField: t huge', () => new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] }).flowField(2 ** 32 - 1), { either: 'flow' }],
   ['FlowAnimation.renderNaiveInto: short', () => new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] }).renderNaiveInto(new Uint8ClampedArray(1)), 'target pixel array'],
-  // Step anatomy of flow animation and placement anatomy of video (issue 16).
+  // Step anatomy of flow animation and placement anatomy of video.
   ['FlowAnimation.renderWarpedInto: in frame 1', () => new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 2, frameSizes: [4] }).renderWarpedInto(new Uint8ClampedArray(8 * 8 * 4)), 'renderWarpedInto'],
   ['FlowAnimation.renderWarpedInto: short, in frame 2', () => {
     const flow = new api.FlowAnimation(ex(), { outputWidth: 8, outputHeight: 8, frames: 3, frameSizes: [4], frameIterations: 1 });

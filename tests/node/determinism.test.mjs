@@ -1,4 +1,4 @@
-// Determinism (issue 15): the same seed, options and input give byte-identical output across
+// Determinism: the same seed, options and input give byte-identical output across
 // runs, between the native build and the wasm package, and whatever the size of the Worker pool.
 //
 // Native and wasm agree because every transcendental function goes through src/core/math.rs (the

@@ -1,4 +1,4 @@
-// No leaks (issue 15): 1,000 tiny sessions of every type are made, stepped and freed, or dropped
+// No leaks: 1,000 tiny sessions of every type are made, stepped and freed, or dropped
 // for wasm-bindgen's FinalizationRegistry to free (the generated glue registers every object;
 // see pkg/texsynth.js), and the wasm memory must end within 1 MiB of its size after the first 10.
 // Each mode runs in its own `node --expose-gc` (leak_run.mjs), both at once.

@@ -9,6 +9,7 @@ import { createHash } from 'node:crypto';
 import { readFileSync } from 'node:fs';
 
 import { api, render, tinyClip } from './fixtures.mjs';
+import { BEGIN, END, apiReference } from '../../scripts/lib/api-reference.mjs';
 import { SESSIONS } from './sessions.mjs';
 
 const schemas = api.__schema();
@@ -109,3 +110,10 @@ for (const name of sessionClasses) {
     }
   });
 }
+
+test('docs/api.md gives every option and event field as declared', () => {
+  const doc = readFileSync(new URL('../../docs/api.md', import.meta.url), 'utf8');
+  const shown = doc.slice(doc.indexOf(BEGIN), doc.indexOf(END) + END.length);
+  assert.ok(shown.startsWith(BEGIN), 'docs/api.md has its generated part');
+  assert.equal(shown, apiReference(schemas), 'docs/api.md is out of date: node scripts/make-typings.mjs pkg --docs');
+});

@@ -67,7 +67,7 @@ export function createHistoryView({ range, live, info, strip, canvases, plots, o
 
   /**
    * What each canvas shows now, kept as an ImageBitmap: the snapshot is taken at the call and
-   * costs next to nothing on the main thread, where getImageData on a 1024x1024 canvas took
+   * costs next to nothing on the main thread, where getImageData on a 1024x1024 canvas takes
    * 6-10 ms per step (it waits for the canvas's drawing and converts every pixel). The bitmap
    * arrives a moment later; `put` draws it then if its step is still shown.
    */

@@ -1,4 +1,4 @@
-// Keyboard painting (issue 16, point 7): every canvas the page paints on with the pointer can be
+// Keyboard painting: every canvas the page paints on with the pointer can be
 // painted with the keyboard too. Such a canvas is made `paintable`: it takes focus, the arrows move
 // a brush cursor over it (Shift: five times further), Space held paints along the path the arrows
 // take (Space down starts the stroke, the arrows draw it, Space up ends it), and Enter paints one

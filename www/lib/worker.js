@@ -1,5 +1,5 @@
 // The page's sessions run in one Web Worker (the package's worker wrapper, pkg/worker.js), so the
-// main thread only draws: a 1024x1024 step that takes 1.5 s no longer freezes the page. A panel
+// main thread only draws: a 1024x1024 step that takes 1.5 s does not freeze the page. A panel
 // creates its session with `remoteSession(kind, args, spec)` and gets a MirrorSession: `await
 // session.step()`, then the views named in `spec` (rendered in the worker, sent with the step)
 // are read synchronously by the usual drawing code: session.renderInto(buffer),

@@ -2,7 +2,7 @@
 // methods, side by side, each with the method-independent quality metrics (lib/quality.js) and
 // its wall time. Texture optimization against graph cut against feature-guided synthesis, or the
 // plain texture energy against the wavelet energies of Shen et al. 2009 (eq. 4). Every method
-// uses its defaults (the papers' parameters, the same the method's own panel starts from). The
+// uses the library's defaults (the same the method's own panel starts from). The
 // sessions run in the page's worker and are stepped in turn by the page's Runner, one step of one
 // method per step, so all of them are seen growing together.
 import { drawInto } from '../lib/canvas.js';

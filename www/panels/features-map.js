@@ -1,7 +1,7 @@
 // The exemplar's feature map of the "Feature-guided" panel, wherever it is detected: on the page
 // for an exemplar up to PAGE_DETECT_PIXELS, so that painting shows at once; in the page's worker
-// for a photo used whole (its detection took 13.5 s on the main thread for 4000x3000, holding the
-// page). Either way the panel draws it, paints and erases it, starts the synthesis from it as
+// for a photo used whole (its detection takes 13.5 s for 4000x3000, too long to hold the main
+// thread). Either way the panel draws it, paints and erases it, starts the synthesis from it as
 // edited, and scores outputs against it (broken features), through the same few calls.
 import { FeatureMap } from '../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../lib/canvas.js';

@@ -62,7 +62,7 @@ export function createPanel(ui) {
       search: ui.$('to-search').value,
       r: Number(ui.$('to-r').value),
       mu: Number(ui.$('to-mu').value),
-      // Empty: the M-step uses μ, the paper's EM.
+      // Empty: left to the library, whose M-step uses min(μ, 1); μ itself is the paper's EM.
       ...(ui.$('to-m-step-mu').value === '' ? {} : { mStepMu: Number(ui.$('to-m-step-mu').value) }),
       iterations: Number(ui.$('to-iterations').value),
       tileable: ui.$('to-tileable').checked,

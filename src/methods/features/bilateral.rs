@@ -83,8 +83,9 @@ const LANES: usize = 8;
 /// that make a pixel's value; 0 from `t` = 80 on), in plain
 /// arithmetic that the compiler vectorises: `2^-x` with `x = t log2(e)` split into a whole power
 /// `k` (written into the exponent bits) and a remainder `f` in [-1/2, 1/2] (a Taylor polynomial
-/// of `e^(-f ln 2)`, degree 6). The range weight of every pair in the window was a library call:
-/// over a 12-megapixel photo that was a quarter of the feature-guided session's set-up.
+/// of `e^(-f ln 2)`, degree 6). It gives the range weight of every pair in the window: as a
+/// library call, over a 12-megapixel photo, that takes a quarter of the feature-guided session's
+/// set-up.
 #[inline(always)]
 fn neg_exp(t: f32) -> f32 {
     let x = (t * std::f32::consts::LOG2_E).min(126.0);

@@ -1,5 +1,6 @@
 //! Feature maps (Wu & Yu 2004, section 2.3): curvilinear edges and ridges as one-pixel-wide
-//! curves, each pixel with its smoothed tangent, its orientation bucket and its colour.
+//! curves (a mask), with the smoothed tangent angle and the detector's response at every pixel
+//! and the threshold used; a pixel's orientation bucket comes from its angle ([`bucket`]).
 //!
 //! Bilateral filter (sigma_d = 2, sigma_r = 10/256) on the grey image; edge response = gradient
 //! magnitude by central differences, ridge response = |Laplacian|; a two-pass classification
@@ -70,8 +71,9 @@ impl DetectOptions {
 /// Number of orientation buckets (section 2.1).
 pub const BUCKETS: usize = 4;
 
-/// A feature map: the curves and, at every pixel, the tangent angle in 0..pi and its bucket (so
-/// that a pixel painted on by hand gets the orientation of the image there).
+/// A feature map: the curves and, at every pixel, the tangent angle in 0..pi (so that a pixel
+/// painted on by hand gets the orientation of the image there; its bucket is [`bucket`] of it)
+/// and the detector's response.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FeatureMap {
     pub width: usize,
@@ -177,7 +179,7 @@ pub fn detect(image: &Image, options: DetectOptions) -> Result<FeatureMap> {
     options.validate()?;
     let (response, angle) = responses(image, options.kind);
     // The response at the percentile's rank: a selection, not a sort (the same value; sorting
-    // 12 million responses of a photo took 6 s natively).
+    // 12 million responses of a photo takes 6 s natively).
     let mut ranked = response.clone();
     let index = ((ranked.len() - 1) as f32 * options.percentile).round() as usize;
     let (_, at_rank, _) = ranked.select_nth_unstable_by(index, f32::total_cmp);

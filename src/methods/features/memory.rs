@@ -12,10 +12,9 @@
 //! - every input (the exemplar and its deformed copies): its feature map (mask, tangent,
 //!   response: `9` bytes a pixel), one feature index
 //!   ([`super::matching::INDEX_BYTES_PER_PIXEL`], 43 bytes a pixel with the scratch of its
-//!   construction; until 2026-12-02 the estimate said 16 while an index held 42 bytes a pixel
-//!   in wasm and 58 natively, and graph-cut placement built two per input), and its image: the
-//!   scan placement's own copy (`4c`); under graph-cut placement the images are graph cut's
-//!   sources, the exemplar counted with them and the deformed copies here (`4c + 8`).
+//!   construction), and its image: the scan placement's own copy (`4c`); under graph-cut
+//!   placement the images are graph cut's sources, the exemplar counted with them and the
+//!   deformed copies here (`4c + 8`).
 
 use super::matching::INDEX_BYTES_PER_PIXEL;
 use super::options::{FeatureOptions, FeaturePlacement};

@@ -48,7 +48,7 @@ pub struct FeatureEvent {
 /// One input (the exemplar or a deformed copy) ready for the scan placement's search.
 /// Graph-cut placement keeps its inputs in [`GraphcutFeatures`] alone (its sources and their
 /// feature indexes): an index is four distance transforms, and over a 12-megapixel photo a
-/// second copy of the inputs was most of a gigabyte.
+/// second copy of the inputs would be most of a gigabyte.
 struct Input {
     image: Image,
     map: FeatureMap,

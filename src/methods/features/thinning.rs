@@ -99,7 +99,7 @@ pub fn thin(mask: &mut [bool], response: &[f32], width: usize, height: usize) ->
     loop {
         // Each border pixel as one integer key, its response's total order above its index:
         // sorting the keys gives the order of `(response, index)` with no look-up per
-        // comparison (over a 12-megapixel photo the indirect sort was a tenth of the set-up).
+        // comparison (over a 12-megapixel photo an indirect sort takes a tenth of the set-up).
         let mut border: Vec<u64> = (0..width * height)
             .filter(|&i| {
                 mask[i] && {

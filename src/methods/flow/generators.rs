@@ -89,8 +89,8 @@ impl Component {
             |name: &'static str, reason: String| Err(Error::InvalidParameter { name, reason });
         let finite = [
             ("strength", self.strength),
-            ("centerX", self.center.0),
-            ("centerY", self.center.1),
+            ("centreX", self.center.0),
+            ("centreY", self.center.1),
             ("angle", self.angle),
             ("period", self.period),
             ("turn", self.turn),

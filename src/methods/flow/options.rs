@@ -45,8 +45,8 @@ pub struct FlowOptions {
     /// the exemplar, as in texture optimisation, or are wider than the frame are skipped). Default: [32, 16, 8], the first frame's ladder.
     /// Structures wider than the smallest size (paving's cells, the tiles' grid) are broken a
     /// little by every warp, and only a neighbourhood as wide as they are repairs them: with
-    /// [16, 8] the flat fraction of frames 30-60 rose to 1.3-1.7x frame 1's and cracks and grid
-    /// lines came apart; with 32 added it stays at 0.9-1.3x, for about 40% more time per frame
+    /// [16, 8] the flat fraction of frames 30-60 rises to 1.3-1.7x frame 1's and cracks and grid
+    /// lines come apart; with 32 added it stays at 0.9-1.3x, for about 40% more time per frame
     /// (see the README's flow section for the flow energy this costs).
     pub frame_sizes: Vec<usize>,
     /// Cap on EM iterations per neighbourhood size per frame; the last one's M-step only
@@ -62,7 +62,7 @@ pub struct FlowOptions {
     /// every pixel: the flow constraint's colours are the texture's own, carried along the
     /// flow. Without it each frame averages the bilinearly warped previous frame with the
     /// texture, and contrast drains away frame after frame (tiles_128, vortex, 256x256: the
-    /// flat fraction of frames 30-60 was 3.8x frame 1's). Default: 1.
+    /// flat fraction of frames 30-60 reaches 3.8x frame 1's). Default: 1.
     pub histogram_matching: f32,
     /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses a frame
     /// size whose working set would exceed it. Default: 1024.

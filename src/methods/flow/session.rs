@@ -17,8 +17,8 @@ use crate::methods::optimization::{self, EventKind};
 
 /// PatchMatch sweeps per M-step within a frame: the matches arrive carried along the flow, so
 /// two sweeps reach what three do (measured: gravel_128, 128x128 vortex, coherence and flow
-/// energy within 2%), for a third less search time (measured when every sweep also searched at
-/// random; since 2026-12-01 only the first does, and a third sweep would only propagate).
+/// energy within 2%), for less search time. Only the first sweep searches at random, so a third
+/// sweep would only propagate.
 const FRAME_PATCHMATCH_PASSES: usize = 2;
 
 /// What a step did.

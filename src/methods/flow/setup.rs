@@ -1,7 +1,7 @@
 //! Setting up a frame after the first: the previous frame and the naive baseline warped along
 //! the field f_(t-1), and every level's matches moved along it. On a large frame this is split
 //! over steps as an iteration is (rows of the warps between looks at the clock): at 2048x2048
-//! it took 1.3 s in one step in wasm.
+//! it takes 1.3 s in wasm, too long for one step.
 
 use super::field::FlowField;
 use super::warp::{Warped, Warping};

@@ -1,4 +1,4 @@
-//! The anatomy of one placement, for teaching (issue 16): the cost surface C(t) of eq. 2 / eq. 4
+//! The anatomy of one placement, for teaching: the cost surface C(t) of eq. 2 / eq. 4
 //! over every candidate offset with the probability eq. 3 gives each, and the graph of section 3
 //! whose minimum cut is the seam, laid out per pixel of the patch's box. Recorded only when asked
 //! ([`super::Session::set_anatomy`]): a synthesis that nobody watches pays nothing.

@@ -3,8 +3,8 @@
 //! largest total per-pixel seam error. A placement changes seams only under its patch, so the
 //! per-pixel error, the window sums and each row's best window are kept between placements and
 //! recomputed only where seams changed ([`ErrorRegions::mark`]). Recomputing them over the whole
-//! output at every refinement step made one placement's cost grow with the output (a 4096x4096
-//! step took 0.5-1 s for that alone).
+//! output at every refinement step would make one placement's cost grow with the output (0.5-1 s
+//! a step at 4096x4096 for that alone).
 //!
 //! The first look at a covered output computes everything with the whole-output functions
 //! ([`SeamErrors::seam_error`] and the two passes of `box_sum::box_sums`), so it gives the same
@@ -227,7 +227,7 @@ mod tests {
     use crate::methods::graphcut::canvas::Canvas;
     use crate::solvers::box_sum::box_sums;
 
-    /// The region found over the whole output, as before the sums were kept.
+    /// The region found over the whole output from scratch, without the kept sums.
     fn whole(canvas: &Canvas, side: usize) -> (usize, usize, f32) {
         let (w, h) = (canvas.width, canvas.height);
         let sums = box_sums(&canvas.seam_error(), w, h, side, canvas.wrap);

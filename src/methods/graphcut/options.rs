@@ -1,4 +1,5 @@
-//! Options of graph-cut texture synthesis, with the paper's values as defaults.
+//! Options of graph-cut texture synthesis. Only `k` defaults to a value of the paper; the other
+//! defaults are the library's (docs/methods/graphcut.md gives each one's reason).
 
 use crate::core::{Error, Result, error::check_size};
 

@@ -122,7 +122,7 @@ impl SoftConstraints {
 
 /// A constraint's M-step query terms per pixel: `lm c` (the pull towards the target colour,
 /// per channel), `1 + lm` (the weight's gain) and its inverse, so that constraining a query is
-/// a multiply-add per value (a division per value made it a third of a flow frame's time).
+/// a multiply-add per value (a division per value would make it a third of a flow frame's time).
 #[derive(Debug, Clone, PartialEq)]
 pub struct QueryTerms {
     width: usize,

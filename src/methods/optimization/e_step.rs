@@ -281,7 +281,7 @@ fn add_plain<const N: usize, const C: usize, const NC: usize>(
 
 /// Adds one row run of a matched neighbourhood: `weight += omega g` and `colour += omega g z`
 /// per pixel, `g_channels` being `g` repeated over the channels. Two element-wise loops over
-/// contiguous values, which vectorise (a loop over pixels with the channels inside did not).
+/// contiguous values, which vectorise (a loop over pixels with the channels inside does not).
 /// Whole RGB or grey rows of the usual widths (8, 16, 32) run in loops of a fixed length: a loop
 /// of a length known only at run time spends as long on its set-up and remainder as on 24
 /// values.
@@ -393,7 +393,7 @@ pub fn robust_weight(squared_distance: f32, r: f32) -> f32 {
 /// The IRLS weight of every squared distance (1 where it is infinite: before the first
 /// M-step) into `weights`, and the texture energy sum_p d_p^(r/2) in the same pass: d^(r/2) =
 /// d * d^((r-2)/2) = d * omega wherever omega's floor does not apply, so the energy needs no
-/// power of its own (a double-precision power per node was 3% of a 1024x1024 synthesis in
+/// power of its own (a double-precision power per node costs 3% of a 1024x1024 synthesis in
 /// wasm).
 pub fn robust_weights(distances: &[f32], r: f32, weights: &mut Vec<f32>) -> f64 {
     let half_r = f64::from(r) / 2.0;

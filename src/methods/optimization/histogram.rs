@@ -61,7 +61,7 @@ pub struct SortedChannels {
 impl SortedChannels {
     /// The quantiles of `exemplar`, from every pixel up to [`MAX_QUANTILE_PIXELS`] and from an
     /// even subsample of a larger one (a 4000x3000 photo: sorting 12 million values per channel
-    /// took seconds at each level's start, for quantiles that a million samples give as well).
+    /// takes seconds at each level's start, for quantiles that a million samples give as well).
     #[must_use]
     pub fn new(exemplar: &Image) -> Self {
         let c = exemplar.channels();
@@ -89,7 +89,7 @@ impl SortedChannels {
     /// values and are left out of the ranking.
     ///
     /// Ranks come from a histogram of 4,096 buckets between the channel's minimum and maximum
-    /// (three sequential passes, where a sort of a million pixels per E-step took a quarter of
+    /// (three sequential passes, where a sort of a million pixels per E-step takes a quarter of
     /// a 1024x1024 synthesis). The transfer function is piecewise linear: at each bucket
     /// boundary it gives the exemplar quantile of the rank there (the count of pixels below),
     /// and a value inside a bucket is interpolated by its place in the bucket. Equal values get

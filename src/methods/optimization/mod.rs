@@ -22,11 +22,11 @@ pub mod teaching;
 pub mod wavelet_energy;
 
 #[cfg(test)]
-mod detail_tests;
-#[cfg(test)]
 mod start_tests;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod wash_out_tests;
 #[cfg(test)]
 mod wavelet_tests;
 

@@ -38,7 +38,7 @@ pub struct Occurrence {
     /// `(width + 1) * (height + 1)`: the matches' windows as a 2-D difference array, then the
     /// summed-area table of the coverage (one buffer, kept between M-steps: at a 3000x3000
     /// exemplar each of these arrays is 72 MB, and allocating and zeroing them at every M-step
-    /// was a sixth of their cost).
+    /// would add a sixth to its cost).
     sums: Vec<f64>,
     /// The coverage of the row above, before averaging (`width`).
     column: Vec<f64>,
@@ -146,8 +146,8 @@ impl Occurrence {
         // never less than one coherent copy of it gives (each of its pixels covered by
         // (size / spacing)^2 neighbourhoods). Without that floor, an exemplar with more pixels
         // than the output has an even share below one copy, and every coherent run of matches
-        // (the texture's structures, copied whole) was priced as over-use: a 512x512 exemplar
-        // to 256x256 came out blocky and washed out (flat fraction 0.15, against 0.05 with no
+        // (the texture's structures, copied whole) is priced as over-use: a 512x512 exemplar
+        // to 256x256 comes out blocky and washed out (flat fraction 0.15, against 0.05 with no
         // penalty).
         let per_pixel = (size as f64 / spacing.max(1) as f64).powi(2);
         let even = ((matches.len() * size * size) as f64 / (width * height) as f64).max(per_pixel)

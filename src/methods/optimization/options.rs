@@ -1,4 +1,7 @@
-//! The options of texture optimisation, with the paper's values as defaults.
+//! The options of texture optimisation. The defaults of `levels`, `neighbourhood_sizes`,
+//! `iterations` and `r` are the paper's; those of `mu`, `m_step_mu`, `search`, `start`,
+//! `completeness` and `histogram_matching` differ from it, for the reasons the method page
+//! (`docs/methods/optimization.md`) gives.
 
 use crate::core::budget::{DEFAULT_MEMORY_BUDGET_MIB, validate_budget};
 use crate::core::{Error, Result, error::check_size};

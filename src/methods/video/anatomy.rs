@@ -1,4 +1,4 @@
-//! The placement anatomy of video textures (issue 16), reusing the image version's views
+//! The placement anatomy of video textures, reusing the image version's views
 //! ([`crate::methods::graphcut::anatomy`]): the cost surface C(t) with the probabilities of eq. 3,
 //! and the graph whose minimum cut is the seam surface.
 //!

@@ -1,8 +1,8 @@
-//! The memory budget of a video synthesis (issue 14, item 7; since issue 17 the shared budget of
-//! [`crate::core::budget`], default 1024 MiB, settable with `memory_budget_mib`). A wasm32
-//! instance addresses at most 4 GiB, and browsers often refuse to grow one far, so a video whose
-//! working set would not fit is refused up front, with a message naming the sizes and the limit,
-//! instead of trapping half-way with "out of memory".
+//! The memory budget of a video synthesis (the shared budget of [`crate::core::budget`], default
+//! 1024 MiB, settable with `memory_budget_mib`). A wasm32 instance addresses at most 4 GiB, and
+//! browsers often refuse to grow one far, so a video whose working set would not fit is refused
+//! up front, with a message naming the sizes and the limit, instead of trapping half-way with
+//! "out of memory".
 //!
 //! The working set is estimated from what the synthesis holds (bytes per voxel, measured from the
 //! types it allocates):

@@ -1,4 +1,5 @@
-//! Options of a video synthesis, with the paper's values as defaults.
+//! Options of a video synthesis. `fixed_frames` and `transition_window` default to the paper's
+//! values; the other defaults are the library's (docs/methods/video.md gives the reasons).
 
 use crate::core::{Error, Result};
 
@@ -75,7 +76,7 @@ pub struct Options {
     /// M' (eq. 5) instead of M. Default: false.
     pub gradient_cost: bool,
     /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses a video
-    /// whose working set would exceed it. Default: 1024 (256 before issue 17).
+    /// whose working set would exceed it. Default: 1024.
     pub memory_budget_mib: usize,
 }
 
@@ -170,11 +171,11 @@ impl Options {
                         ),
                     ));
                 }
-                // Bounded before the working set multiplies the sizes in usize (fuzz target
-                // `options`: 'extend' to 65536^3 overflowed the estimate, a panic natively; in
-                // wasm32 it wrapped round and the session was accepted). Beyond 2^32 voxels no
-                // budget could hold it; below, the budget check names the sizes and the limit.
-                // (Saturating: three sizes near 2^32 overflow even u64, fuzz target `options` again.)
+                // Bounded before the working set multiplies the sizes in usize: 'extend' to
+                // 65536^3 would overflow the estimate (a panic natively; in wasm32 it would wrap
+                // round and accept the session). Beyond 2^32 voxels no budget could hold it;
+                // below, the budget check names the sizes and the limit. (Saturating: three
+                // sizes near 2^32 overflow even u64.)
                 let voxels = (width as u64)
                     .saturating_mul(height as u64)
                     .saturating_mul(frames as u64 + k as u64);

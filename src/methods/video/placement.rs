@@ -174,9 +174,9 @@ impl Synthesis {
 
     /// While covering: of `draws` random unused offsets, the one whose patch brings the most
     /// uncovered voxels. Deviation from a uniform draw, measured: extending 96x96x30 to
-    /// 192x192x60 took 91 patches and 42 s uniformly, 63 patches and 16 s with 8 draws (native,
-    /// seed 1); with the region centred on the first
-    /// uncovered voxel, half of every uniform patch lands on covered video.
+    /// 192x192x60 takes 91 patches and 42 s uniformly, 63 patches and 16 s with 8 draws (native,
+    /// seed 1); with the region centred on the first uncovered voxel, half of every uniform patch
+    /// lands on covered video.
     pub fn covering_offset(
         &self,
         region: Region,

@@ -1,6 +1,7 @@
 //! The state every video mode shares: the source volumes, the output canvas with its seam memory,
-//! and the seam cost between neighbouring voxels. Seam finding (`seam.rs`) extends it; the modes
-//! (`looping.rs`, `placement.rs`, `constraints.rs`) drive it.
+//! and the seam cost between neighbouring voxels. Seam finding (`seam.rs`) extends it; the
+//! session (`session.rs`: the loop's two placements, 7.D's fixed frames) and the offset choice
+//! (`placement.rs`) drive it.
 
 use super::canvas::{Canvas, Patch, UNCOVERED};
 use super::source::{Axis, Source};

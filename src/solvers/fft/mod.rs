@@ -3,7 +3,7 @@
 //! Written for this project rather than taken from a general FFT crate: the searches need only
 //! complex transforms of lengths with small prime factors (2, 3, 5: the search pads to them) and
 //! real transforms built on them, and the general planner of `rustfft` (every butterfly for every
-//! length, per SIMD flavour) was about a fifth of the compressed `.wasm`. Lengths with other
+//! length, per SIMD flavour) would be about a fifth of the compressed `.wasm`. Lengths with other
 //! factors (a periodic search over an output of prime width) go through Bluestein's chirp-z
 //! algorithm on a smooth length, so every length works.
 //!

@@ -194,8 +194,8 @@ pub struct Objective<'a> {
 }
 
 /// A cost per candidate position, `columns` per row: a table rather than a closure, so that the
-/// lookup inlines into the search loop (through a `dyn Fn` it was an indirect call per
-/// candidate).
+/// lookup inlines into the search loop (through a `dyn Fn` it would be an indirect call
+/// per candidate).
 #[derive(Clone, Copy, Debug)]
 pub struct Penalties<'a> {
     pub values: &'a [f32],

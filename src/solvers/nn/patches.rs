@@ -448,9 +448,9 @@ impl Neighbourhoods {
     ///
     /// Most candidates are rejected after two or three rows, so the rows of the usual lengths
     /// (8, 16 and 32 RGB or grey pixels) get loops of a fixed length, unrolled and without
-    /// bounds checks; the sums are the same, added in the same order. (Grey rows took the loop
-    /// of any length until 2026-12-01: a grey exemplar ran texture optimisation at about half
-    /// the speed of an RGB one.)
+    /// bounds checks; the sums are the same, added in the same order. Grey rows get them too:
+    /// with the loop of any length, a grey exemplar runs texture optimisation at about half the
+    /// speed of an RGB one.
     #[inline]
     #[must_use]
     pub fn distance_with(&self, query: &[f32], weights: &[f32], pos: Pos, bound: f32) -> f32 {

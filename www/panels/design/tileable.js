@@ -55,7 +55,7 @@ export function createStage({ ui, gallery, readout }) {
   return {
     hint: 'makes the base tileable, one graph cut per step; the preview shows it tiled 3×3',
     optionsHtml: `
-      <label title="overlap of the stitches in pixels; 0 = a sixth of each side">overlap <input id="dt-overlap" class="view" type="number" value="0" min="0" max="512"></label>
+      <label title="overlap of the stitches in pixels; 0 = a sixth of each side, at most 64">overlap <input id="dt-overlap" class="view" type="number" value="0" min="0" max="512"></label>
       <label><input id="dt-seams" class="view" type="checkbox"> show seams</label>
       <button id="dt-make" type="button">Make tileable</button>
       <button id="dt-plain" type="button" title="the base tiled as it is, for comparison">Tile the base as is</button>`,

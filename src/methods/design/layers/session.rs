@@ -501,9 +501,9 @@ mod tests {
     }
 
     #[test]
-    fn small_layers_give_the_outputs_they_gave_before_the_window_bound() {
-        // Checksums recorded before layers larger than MAX_LAYER_SIDE were searched through
-        // windows: layers within the bound must give byte-identical outputs.
+    fn small_layers_are_searched_whole_and_keep_their_checksums() {
+        // Layers within MAX_LAYER_SIDE are searched whole, with no window drawn: their outputs
+        // must match these checksums byte for byte.
         let two = vec![
             Layer {
                 texture: sample("gravel_64"),

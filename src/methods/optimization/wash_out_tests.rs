@@ -1,4 +1,4 @@
-//! Tests of the detail goal (issue 10): no wash-out at the default options or with the gradient
+//! Tests of the detail goal: no wash-out at the default options or with the gradient
 //! energy, the gradient solve's convergence, and the M-step's own gradient weight.
 
 use super::Options;
