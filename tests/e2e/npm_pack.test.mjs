@@ -250,7 +250,9 @@ test('README quick start: the Vite build draws the texture', async () => {
 });
 
 test('npm publish --dry-run accepts the package', () => {
-  const out = JSON.parse(npm(['publish', '--dry-run', '--json'], join(ROOT, 'pkg')));
+  // npm 10 keys the report by package name; older versions give the report itself.
+  const report = JSON.parse(npm(['publish', '--dry-run', '--json'], join(ROOT, 'pkg')));
+  const out = report['texsynth-wasm'] ?? report;
   assert.equal(out.name, 'texsynth-wasm');
   for (const file of ['LICENSE-MIT', 'LICENSE-APACHE', 'README.md']) assert.ok(out.files.some((f) => f.path === file), file);
 });
