@@ -5,15 +5,10 @@
 //!
 //! `cargo test --test determinism_hashes`
 
-use texsynth::core::{Image, decode, to_rgba8};
-use texsynth::methods::design::Deformation;
-use texsynth::methods::design::layers::{Layer, LayerDesign, LayerOptions};
-use texsynth::methods::features::{FeatureOptions, FeatureSynthesis};
-use texsynth::methods::flow::{
-    Component, FlowKind, FlowOptions, FlowSession, FlowSource, FlowSpec,
-};
-use texsynth::methods::graphcut;
-use texsynth::methods::optimization;
+use texsynth::design::Deformation;
+use texsynth::design::layers::{self, Layer};
+use texsynth::flow::{self, Component, FlowKind, FlowSource, FlowSpec};
+use texsynth::{Image, decode, features, graphcut, optimization, to_rgba8};
 
 fn sample(name: &str) -> Image {
     let path = format!("{}/www/samples/{name}.png", env!("CARGO_MANIFEST_DIR"));
@@ -66,14 +61,14 @@ fn graphcut(name: &str) -> u32 {
 }
 
 fn features(name: &str) -> u32 {
-    let options = FeatureOptions {
+    let options = features::Options {
         output_width: 96,
         output_height: 96,
         patch_size: Some(32),
         seed: 3,
-        ..FeatureOptions::default()
+        ..features::Options::default()
     };
-    let mut s = FeatureSynthesis::new(&sample(name), None, options).expect("session");
+    let mut s = features::Session::new(&sample(name), None, options).expect("session");
     while !s.is_done() {
         s.step().expect("step");
     }
@@ -81,19 +76,19 @@ fn features(name: &str) -> u32 {
 }
 
 fn layers(name: &str) -> u32 {
-    let options = LayerOptions {
+    let options = layers::Options {
         output_width: 96,
         output_height: 96,
         patch_size: 16,
         seed: 3,
-        ..LayerOptions::default()
+        ..layers::Options::default()
     };
     let layer = Layer {
         texture: sample(name),
         deformations: vec![Deformation::Rotate { degrees: 30.0 }],
     };
     let layout = vec![0u8; 96 * 96];
-    let mut s = LayerDesign::new(&[layer], &layout, options).expect("session");
+    let mut s = layers::Session::new(&[layer], &layout, options).expect("session");
     while !s.is_done() {
         s.step().expect("step");
     }
@@ -103,16 +98,16 @@ fn layers(name: &str) -> u32 {
 /// Three frames of flow animation (a vortex of strength 2, the default flow): the frames
 /// after the first run the M-step under the soft constraint of the warped previous frame.
 fn flow(name: &str) -> u32 {
-    let options = FlowOptions {
+    let options = flow::Options {
         output_width: 48,
         output_height: 48,
         frames: 3,
         seed: 3,
-        ..FlowOptions::default()
+        ..flow::Options::default()
     };
     let vortex = FlowSpec::new(vec![Component::new(FlowKind::Vortex, 2.0)]).expect("flow");
     let mut s =
-        FlowSession::new(&sample(name), FlowSource::Generator(vortex), options).expect("session");
+        flow::Session::new(&sample(name), FlowSource::Generator(vortex), options).expect("session");
     while !s.is_done() {
         s.step().expect("step");
     }
