@@ -32,6 +32,26 @@ ensure_wasm_bindgen() {
   fi
 }
 
+# The nightly toolchain of the threaded module (std rebuilt with atomics needs -Z build-std),
+# named here only.
+THREADS_TOOLCHAIN=nightly-2026-05-20
+
+# Installs the pinned nightly with rust-src when missing; prints one line and returns 1 when it
+# cannot be installed, so that the build ships the single-threaded module alone.
+ensure_threads_toolchain() {
+  if rustup run "$THREADS_TOOLCHAIN" rustc --version >/dev/null 2>&1 &&
+    rustup component list --installed --toolchain "$THREADS_TOOLCHAIN" 2>/dev/null | grep -q '^rust-src'; then
+    echo "ensure: $THREADS_TOOLCHAIN with rust-src present"
+    return 0
+  fi
+  echo "ensure: installing $THREADS_TOOLCHAIN with rust-src (the threaded module's toolchain)"
+  if rustup toolchain install "$THREADS_TOOLCHAIN" --profile minimal --component rust-src >/dev/null 2>&1; then
+    return 0
+  fi
+  echo "ensure: $THREADS_TOOLCHAIN could not be installed: building the single-threaded module alone"
+  return 1
+}
+
 ensure_chromium() {
   if [ -x /usr/bin/chromium ] && [ -x /usr/bin/chromedriver ]; then
     echo "ensure: chromium and chromedriver present"

@@ -18,6 +18,7 @@ mod pixels;
 mod quality;
 mod schema;
 mod session;
+mod threads;
 mod video;
 
 pub use brush::TextureBrush;
@@ -30,6 +31,7 @@ pub use layers::LayerDesign;
 pub use merge::GraphcutMerge;
 pub use optimization::TextureOptimization;
 pub use quality::measure_quality;
+pub use threads::{thread_count, threaded};
 pub use video::{VideoClip, VideoTextures};
 
 use wasm_bindgen::prelude::*;

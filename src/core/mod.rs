@@ -9,6 +9,7 @@ pub mod error;
 pub mod gradient;
 pub mod image;
 pub mod math;
+pub mod parallel;
 pub mod power;
 pub mod pyramid;
 pub mod rng;

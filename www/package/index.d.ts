@@ -523,3 +523,9 @@ export function measureQuality(exemplar: Exemplar, rgba: Bytes, width: number, h
 export function start(): void;
 /** The library's version. */
 export function version(): string;
+
+/** Whether this module was built with threads: true from `texsynth-wasm/threads`. */
+export function threaded(): boolean;
+
+/** Threads a synthesis runs on: the thread pool's size, 1 for the default module. */
+export function threadCount(): number;

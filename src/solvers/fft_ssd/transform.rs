@@ -2,11 +2,16 @@
 //! columns, then (for a volume, `nz > 1`) complex transforms along the third axis, the time of a
 //! video. An image is the depth-1 case: the third pass is skipped and nothing else changes.
 
+use crate::core::parallel;
 use crate::solvers::fft::{Complex, Direction, Fft, RealFft};
 
 /// Rows and columns are transformed this many at a time, interleaved: long, contiguous inner
 /// loops in the passes, and a block that stays in cache (`n * 16 * 16` bytes).
 const BLOCK: usize = 8;
+
+/// Blocks per piece of parallel work: the pieces, and so the results, do not depend on the
+/// thread count.
+const PIECE: usize = 8;
 
 /// The spectrum is row-major, `spectrum[(z * ny + y) * (nx / 2 + 1) + kx]`; products of spectra
 /// do not care about the layout.
@@ -66,12 +71,14 @@ impl Transform {
     /// `field` (row-major, `nx * ny`) to its unnormalised spectrum.
     pub(super) fn forward(&mut self, field: &[f64], spectrum: &mut [Complex<f64>]) {
         let width = self.rows.spectrum_len();
-        for (rows, out) in field
-            .chunks(self.nx * BLOCK)
-            .zip(spectrum.chunks_mut(width * BLOCK))
-        {
-            self.rows.forward_batch(rows, out, &mut self.scratch);
-        }
+        let (nx, rows, scratch_len) = (self.nx, &self.rows, self.scratch.len());
+        parallel::for_each_piece_mut(spectrum, width * BLOCK * PIECE, |piece, out| {
+            let mut scratch = vec![Complex::default(); scratch_len];
+            let field = &field[piece * nx * BLOCK * PIECE..];
+            for (rows_in, out) in field.chunks(nx * BLOCK).zip(out.chunks_mut(width * BLOCK)) {
+                rows.forward_batch(rows_in, out, &mut scratch);
+            }
+        });
         let slice = width * self.ny;
         for frame in spectrum.chunks_exact_mut(slice) {
             self.columns(frame, Direction::Forward);
@@ -86,12 +93,15 @@ impl Transform {
         for frame in spectrum.chunks_exact_mut(width * self.ny) {
             self.columns(frame, Direction::Inverse);
         }
-        for (rows, out) in spectrum
-            .chunks(width * BLOCK)
-            .zip(field.chunks_mut(self.nx * BLOCK))
-        {
-            self.rows.inverse_batch(rows, out, &mut self.scratch);
-        }
+        let spectrum = &*spectrum;
+        let (nx, rows, scratch_len) = (self.nx, &self.rows, self.scratch.len());
+        parallel::for_each_piece_mut(field, nx * BLOCK * PIECE, |piece, out| {
+            let mut scratch = vec![Complex::default(); scratch_len];
+            let spectrum = &spectrum[piece * width * BLOCK * PIECE..];
+            for (rows_in, out) in spectrum.chunks(width * BLOCK).zip(out.chunks_mut(nx * BLOCK)) {
+                rows.inverse_batch(rows_in, out, &mut scratch);
+            }
+        });
     }
 
     /// Transforms along the third axis: the same (y, kx) of every frame is one sequence. Frames are
@@ -133,21 +143,34 @@ impl Transform {
             Direction::Forward => &self.columns_forward,
             Direction::Inverse => &self.columns_inverse,
         };
-        for first in (0..width).step_by(BLOCK) {
-            let count = BLOCK.min(width - first);
-            let block = &mut self.block[..self.ny * count];
-            for (to, row) in block
-                .chunks_exact_mut(count)
-                .zip(spectrum.chunks_exact(width))
-            {
-                to.copy_from_slice(&row[first..first + count]);
-            }
-            plan.process_batch(block, &mut self.scratch, count);
-            for (from, row) in block
-                .chunks_exact(count)
-                .zip(spectrum.chunks_exact_mut(width))
-            {
-                row[first..first + count].copy_from_slice(from);
+        let (ny, scratch_len) = (self.ny, self.scratch.len());
+        let firsts: Vec<usize> = (0..width).step_by(BLOCK).collect();
+        for group in firsts.chunks(PIECE) {
+            // Each block of columns is gathered and transformed on its own; the blocks are then
+            // scattered back in order.
+            let spectrum_in = &*spectrum;
+            let blocks = parallel::map(group.len(), |b| {
+                let first = group[b];
+                let count = BLOCK.min(width - first);
+                let mut block = vec![Complex::default(); ny * count];
+                let mut scratch = vec![Complex::default(); scratch_len];
+                for (to, row) in block
+                    .chunks_exact_mut(count)
+                    .zip(spectrum_in.chunks_exact(width))
+                {
+                    to.copy_from_slice(&row[first..first + count]);
+                }
+                plan.process_batch(&mut block, &mut scratch, count);
+                block
+            });
+            for (&first, block) in group.iter().zip(&blocks) {
+                let count = BLOCK.min(width - first);
+                for (from, row) in block
+                    .chunks_exact(count)
+                    .zip(spectrum.chunks_exact_mut(width))
+                {
+                    row[first..first + count].copy_from_slice(from);
+                }
             }
         }
     }
