@@ -7,6 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
+import { existsSync } from 'node:fs';
 import { CASES, fnv1a, runCase } from './determinism_cases.mjs';
 import { api, sampleBytes } from './fixtures.mjs';
 
@@ -47,4 +48,38 @@ test('the Worker pool size changes no output', { timeout: 300_000 }, async () =>
       pool.close();
     }
   }
+});
+
+test('the threaded module gives the same bytes at 1, 2 and 4 threads', { timeout: 600_000 }, async () => {
+  if (!existsSync(new URL('../../pkg/threads/texsynth_bg.wasm', import.meta.url))) {
+    // The build shipped the single-threaded module alone: then no threaded entry may be left.
+    assert.equal(existsSync(new URL('../../pkg/threads.js', import.meta.url)), false);
+    console.log('determinism: no threaded module in pkg/ (built without the nightly)');
+    return;
+  }
+  const threads = await import('../../pkg/threads.js');
+  assert.equal(threads.threaded(), true);
+  assert.equal(api.threaded(), false);
+  assert.equal(api.threadCount(), 1);
+  const expected = CASES.map((c) => fnv1a(runCase(c)));
+  for (const n of [1, 2, 4]) {
+    assert.equal(await threads.initThreadPool(n), n);
+    assert.equal(threads.threadCount(), n);
+    const got = CASES.map((c) => fnv1a(runCase(c, threads)));
+    const differ = CASES.filter((c, i) => got[i] !== expected[i]).map((c) => c.name);
+    assert.deepEqual(differ, [], `${n} threads`);
+  }
+  console.log(`determinism: ${CASES.length} cases identical on the threaded module at 1, 2 and 4 threads`);
+});
+
+test('natively, the parallel feature gives the same bytes at 1, 2 and 4 threads', { timeout: 900_000 }, () => {
+  const hashes = (features, threads) => execFileSync('cargo', ['test', '--quiet', ...features, '--test', 'determinism_hashes'], {
+    cwd: ROOT, encoding: 'utf8', stdio: ['ignore', 'pipe', 'inherit'],
+    env: { ...process.env, RAYON_NUM_THREADS: String(threads) },
+  });
+  const serial = hashes([], 1);
+  for (const n of [1, 2, 4]) {
+    assert.equal(hashes(['--features', 'parallel'], n), serial, `rayon with ${n} threads`);
+  }
+  console.log('determinism: native outputs identical without rayon and with 1, 2 and 4 threads');
 });

@@ -24,8 +24,9 @@ export function fnv1a(bytes) {
   return h.toString(16).padStart(8, '0');
 }
 
-/** Runs a case to the end in this thread; returns its RGBA output. */
-export function runCase({ kind, sample, options, deformations }) {
+/** Runs a case to the end in this thread with the module `lib`; returns its RGBA output. */
+export function runCase({ kind, sample, options, deformations }, lib = api) {
+  const api = lib;
   const exemplar = api.Exemplar.fromBytes(sampleBytes(sample));
   let session;
   if (kind === 'LayerDesign') {
