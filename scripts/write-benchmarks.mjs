@@ -26,11 +26,12 @@ const ms = (v) => (v == null ? '—' : `${Math.round(v)}`);
 const [w, h] = report.output_size;
 const summaries = report.summary.filter((s) => s.method !== 'peer');
 const peer = report.summary.find((s) => s.method === 'peer');
+const date = new Date().toISOString().slice(0, 10);
 const machine = `${report.machine.cores} cores (${report.machine.cpu}), ${report.machine.os}, Node ${report.node ?? '—'}`;
 
 const lines = [];
+lines.push(`Measured on ${date}, ${machine}, by \`${command}\`.`, '');
 lines.push('# Benchmarks', '');
-lines.push(`Measured on ${machine}, by \`${command}\`.`, '');
 lines.push(
   'Speed and quality of each method beside the [`texture-synthesis`](https://crates.io/crates/texture-synthesis)',
   'crate 0.8.2 (the peer), both on one thread with their default settings, on the same exemplar',
