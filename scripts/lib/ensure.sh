@@ -33,8 +33,8 @@ ensure_wasm_bindgen() {
 }
 
 # The nightly toolchain of the threaded module (std rebuilt with atomics needs -Z build-std),
-# named here only.
-THREADS_TOOLCHAIN=nightly-2026-05-20
+# named once, as `threads-toolchain` under [package.metadata.texsynth] in Cargo.toml.
+THREADS_TOOLCHAIN="$(sed -n 's/^threads-toolchain *= *"\(.*\)"/\1/p' "$ROOT/Cargo.toml")"
 
 # Installs the pinned nightly with rust-src when missing; prints one line and returns 1 when it
 # cannot be installed, so that the build ships the single-threaded module alone.
