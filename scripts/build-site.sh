@@ -15,4 +15,12 @@ rm -rf "$out/package"
 # The page imports ./pkg/texsynth.js and ./pkg/worker.js: the package as npm ships it.
 mkdir -p "$out/pkg"
 cp pkg/*.js pkg/*.wasm pkg/package.json "$out/pkg/"
+[ -d pkg/threads ] && cp -r pkg/threads "$out/pkg/"
+# Cross-origin isolation lets the page's worker run the threaded module; hosts that read a
+# _headers file (Netlify, Cloudflare Pages) send these headers, and others need them configured.
+cat >"$out/_headers" <<'HEADERS'
+/*
+  Cross-Origin-Opener-Policy: same-origin
+  Cross-Origin-Embedder-Policy: require-corp
+HEADERS
 echo "build-site: $out/ ($(du -sh "$out" | cut -f1)): serve it with any static server, e.g. node scripts/serve.mjs 8080 $out"

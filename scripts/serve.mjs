@@ -1,6 +1,9 @@
 // A plain static server for a folder (default site/, the page as ./scripts/build-site.sh writes
-// it): what any static host does, with the content types the page needs. No dependencies.
-// Run directly (`node scripts/serve.mjs [port] [folder]`) or import `startServer` from tests.
+// it): what any static host does, with the content types the page needs and the two headers
+// that make the page cross-origin isolated, so that its worker runs the threaded module
+// (`isolated: false`, or --not-isolated, serves without them). No dependencies.
+// Run directly (`node scripts/serve.mjs [port] [folder] [--not-isolated]`) or import
+// `startServer` from tests.
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
 import { extname, join, normalize, resolve } from 'node:path';
@@ -27,7 +30,13 @@ function filePath(root, urlPath) {
   return join(root, path.endsWith('/') ? path + 'index.html' : path);
 }
 
-export function startServer({ port = 8080, host = '127.0.0.1', root = SITE } = {}) {
+/** The headers that make a page cross-origin isolated (site/_headers says the same to hosts). */
+export const ISOLATION = {
+  'cross-origin-opener-policy': 'same-origin',
+  'cross-origin-embedder-policy': 'require-corp',
+};
+
+export function startServer({ port = 8080, host = '127.0.0.1', root = SITE, isolated = true } = {}) {
   const server = createServer(async (req, res) => {
     const path = filePath(root, req.url);
     try {
@@ -36,6 +45,7 @@ export function startServer({ port = 8080, host = '127.0.0.1', root = SITE } = {
       res.writeHead(200, {
         'content-type': TYPES[extname(path)] ?? 'application/octet-stream',
         'cache-control': 'no-store',
+        ...(isolated ? ISOLATION : {}),
       });
       res.end(body);
     } catch {
@@ -50,9 +60,11 @@ export function startServer({ port = 8080, host = '127.0.0.1', root = SITE } = {
 }
 
 if (process.argv[1] === fileURLToPath(import.meta.url)) {
-  const port = Number(process.argv[2] ?? process.env.PORT ?? 8080);
-  const root = resolve(process.argv[3] ?? SITE);
-  const server = await startServer({ port, root });
+  const args = process.argv.slice(2).filter((a) => a !== '--not-isolated');
+  const port = Number(args[0] ?? process.env.PORT ?? 8080);
+  const root = resolve(args[1] ?? SITE);
+  const isolated = !process.argv.includes('--not-isolated');
+  const server = await startServer({ port, root, isolated });
   const { address, port: bound } = server.address();
   console.log(`serving ${root} at http://${address}:${bound}/  (Ctrl-C to stop)`);
 }

@@ -10,6 +10,7 @@ import { createHistoryView } from './lib/history-view.js';
 import { setupInput } from './lib/input.js';
 import { plotLength } from './lib/plot.js';
 import { Runner } from './lib/runner.js';
+import { pageWorker } from './lib/worker.js';
 import { SAMPLES } from './lib/samples.js';
 import { installKeyboardBrush } from './lib/keyboard-brush.js';
 import { setupTablist } from './lib/tablist.js';
@@ -207,6 +208,18 @@ function setupHistory() {
 async function main() {
   await init();
   $('version').textContent = `v${version()}`;
+  // The page's worker runs the threaded module where the page is cross-origin isolated: say which.
+  pageWorker().ready.then(
+    (info) => {
+      const threads = info.threaded ? `${info.threads} thread${info.threads === 1 ? '' : 's'}` : 'single-threaded';
+      $('version').textContent = `v${version()} · ${threads}`;
+      $('version').dataset.threads = String(info.threads);
+      $('version').title = info.threaded
+        ? 'Each synthesis runs on a pool of threads over shared memory (the threaded module).'
+        : `Each synthesis runs on one core: ${info.reason}`;
+    },
+    () => {},
+  );
   ui.outputCanvas = $('output-canvas');
   setupHistory();
   const wanted = readUrlState(location.search);

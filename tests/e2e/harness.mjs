@@ -6,9 +6,13 @@ import { startServer } from '../../scripts/serve.mjs';
 
 export const RESULTS = new URL('../../test-results/', import.meta.url).pathname;
 
-export async function openDemo() {
+/**
+ * The page in headless Chromium, served cross-origin isolated (its worker runs the threaded
+ * module) unless `isolated` is false.
+ */
+export async function openDemo({ isolated = true } = {}) {
   mkdirSync(RESULTS, { recursive: true });
-  const server = await startServer({ port: 0 });
+  const server = await startServer({ port: 0, isolated });
   const browser = await chromium.launch({
     executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
     args: [

@@ -3,15 +3,31 @@
 const abortError = (signal) =>
   signal?.reason ?? new DOMException('The operation was aborted.', 'AbortError');
 
-/** One worker: a message channel with request ids. Hosts any number of sessions. */
+/** Checks the `threads` a worker is asked for: 'auto', false, or a whole number from 1 to 64. */
+export function checkThreads(threads) {
+  if (threads === 'auto' || threads === false || (Number.isInteger(threads) && threads >= 1 && threads <= 64)) return threads;
+  throw new Error(`threads must be 'auto', false or a whole number from 1 to 64, got ${String(threads)}`);
+}
+
+/**
+ * One worker: a message channel with request ids. Hosts any number of sessions. `threads` picks
+ * its module (worker-module.js); `ready` resolves to `{ threaded, threads, reason }`, which `info`
+ * keeps.
+ */
 export class TexsynthWorker {
-  constructor(spawn) {
+  constructor(spawn, { threads = false } = {}) {
+    checkThreads(threads);
     this.port = spawn();
     this.nextId = 1;
     this.pending = new Map();
+    this.info = null;
     this.ready = new Promise((resolve, reject) => {
       this.port.onMessage((message) => {
-        if (message.type === 'ready') return resolve();
+        if (message.type === 'ready') {
+          const { threaded, threads: count, reason } = message;
+          this.info = { threaded, threads: count, reason };
+          return resolve(this.info);
+        }
         if (message.type === 'failed') return reject(new Error(`texsynth worker could not start: ${message.message}`));
         const request = this.pending.get(message.id);
         if (!request) return;
@@ -29,6 +45,7 @@ export class TexsynthWorker {
         this.pending.clear();
       });
     });
+    this.port.postMessage({ type: 'init', threads });
   }
 
   request(body, { transfer = [], onEvent } = {}) {
@@ -245,8 +262,8 @@ const imageOf = ({ image, width, height }) => ({ data: new Uint8ClampedArray(ima
  * and resolves with `{ event, image }` (the final image); `pool.close()` ends the workers.
  */
 export class WorkerPool {
-  constructor(spawn, size) {
-    this.workers = Array.from({ length: Math.max(1, size) }, () => new TexsynthWorker(spawn));
+  constructor(spawn, size, options) {
+    this.workers = Array.from({ length: Math.max(1, size) }, () => new TexsynthWorker(spawn, options));
     this.idle = [...this.workers];
     this.queue = [];
   }

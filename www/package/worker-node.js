@@ -13,6 +13,13 @@ export function spawnWorker() {
   };
 }
 
-export const createWorker = () => new TexsynthWorker(spawnWorker);
-export const createPool = (size = Math.min(4, availableParallelism())) => new WorkerPool(spawnWorker, size);
+/**
+ * A new worker hosting sessions. `threads`: 'auto' (default) runs the threaded module on every
+ * core when the package has it and the single-threaded one otherwise; a number asks for that many
+ * threads; false asks for the single-threaded module.
+ */
+export const createWorker = ({ threads = 'auto' } = {}) => new TexsynthWorker(spawnWorker, { threads });
+/** A pool of `size` workers (default: every core, at most 4), single-threaded unless `threads` says otherwise. */
+export const createPool = (size = Math.min(4, availableParallelism()), { threads = false } = {}) =>
+  new WorkerPool(spawnWorker, size, { threads });
 export { MirrorSession, TexsynthWorker, WorkerPool, WorkerSession };

@@ -75,9 +75,22 @@ export class WorkerSession<K extends SessionKind = SessionKind> {
   free(): Promise<void>;
 }
 
+/**
+ * Which module a worker runs. 'auto': the threaded module on every core where it can run (a
+ * cross-origin isolated page, or Node with the threaded build), the single-threaded one elsewhere.
+ * A number: the threaded module with that many threads (1 to 64), or a failed `ready` naming why
+ * it cannot run. false: the single-threaded module.
+ */
+export type WorkerThreads = 'auto' | false | number;
+
+/** The module a worker runs: `reason` says why 'auto' fell back to the single-threaded one. */
+export interface WorkerModuleInfo { threaded: boolean; threads: number; reason: string | null }
+
 /** One worker; hosts any number of sessions. */
 export class TexsynthWorker {
-  readonly ready: Promise<void>;
+  readonly ready: Promise<WorkerModuleInfo>;
+  /** What `ready` resolved to; null until then. */
+  readonly info: WorkerModuleInfo | null;
   createSession<K extends SessionKind>(kind: K, ...args: SessionKinds[K]['args']): Promise<WorkerSession<K>>;
   terminate(): void;
 }
@@ -92,6 +105,7 @@ export class WorkerPool {
   close(): void;
 }
 
-export function createWorker(): TexsynthWorker;
-/** Default size: the core count, at most 4. */
-export function createPool(size?: number): WorkerPool;
+/** A worker; `threads` defaults to 'auto'. */
+export function createWorker(options?: { threads?: WorkerThreads }): TexsynthWorker;
+/** Default size: the core count, at most 4; each worker single-threaded unless `threads` says otherwise. */
+export function createPool(size?: number, options?: { threads?: WorkerThreads }): WorkerPool;

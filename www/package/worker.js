@@ -13,8 +13,17 @@ export function spawnWorker() {
   };
 }
 
-/** A new worker hosting sessions. */
-export const createWorker = () => new TexsynthWorker(spawnWorker);
-/** A pool of `size` workers (default: hardware concurrency, at most 4). */
-export const createPool = (size = Math.min(4, globalThis.navigator?.hardwareConcurrency ?? 2)) => new WorkerPool(spawnWorker, size);
+/**
+ * A new worker hosting sessions. `threads`: 'auto' (default) runs the threaded module on every
+ * core where the page is cross-origin isolated and the single-threaded one elsewhere; a number
+ * asks for that many threads; false asks for the single-threaded module.
+ */
+export const createWorker = ({ threads = 'auto' } = {}) => new TexsynthWorker(spawnWorker, { threads });
+/**
+ * A pool of `size` workers (default: hardware concurrency, at most 4), each running one session at
+ * a time. The pool spreads sessions over cores, so its workers are single-threaded unless
+ * `threads` says otherwise.
+ */
+export const createPool = (size = Math.min(4, globalThis.navigator?.hardwareConcurrency ?? 2), { threads = false } = {}) =>
+  new WorkerPool(spawnWorker, size, { threads });
 export { MirrorSession, TexsynthWorker, WorkerPool, WorkerSession };
