@@ -6,7 +6,7 @@
 //! weighted screened Poisson system ([`crate::solvers::poisson`]), warm-started from the output.
 
 use super::constraints::Constraint;
-use crate::core::{Edge, Image};
+use crate::core::{Edge, Image, parallel};
 use crate::solvers::nn::Pos;
 use crate::solvers::poisson::ScreenedPoisson;
 
@@ -91,11 +91,12 @@ impl Sums {
         }
     }
 
-    /// Adds the matched neighbourhoods of `nodes`.
+    /// Adds the matched neighbourhoods of `nodes`. The output is cut into bands of
+    /// [`BAND_ROWS`] rows that are summed in parallel, each over the nodes that reach it in node
+    /// order: every pixel adds the same terms in the same order as one pass over the nodes, so
+    /// the sums are the same to the bit at any thread count.
     pub fn add(&mut self, m: &Matches<'_>, nodes: std::ops::Range<usize>) {
         let (w, h, c) = (self.width, self.height, self.channels);
-        let (ew, eh) = (m.exemplar.width(), m.exemplar.height());
-        let ex = m.exemplar.data();
         let gradient = m.mu > 0.0;
         let Sums {
             weight,
@@ -114,8 +115,6 @@ impl Sums {
                 .flat_map(|&g| std::iter::repeat_n(g, c))
                 .collect();
         }
-        type Plain =
-            fn(&Matches<'_>, std::ops::Range<usize>, usize, &[f32], &mut [f32], &mut [f32]);
         let plain: Option<Plain> = match (m.size, c) {
             _ if m.wrap || gradient => None,
             (8, 3) => Some(add_plain::<8, 3, 24>),
@@ -126,57 +125,40 @@ impl Sums {
             (32, 1) => Some(add_plain::<32, 1, 32>),
             _ => None,
         };
-        if let Some(plain) = plain {
-            plain(m, nodes, w, falloff_channels, weight, colour);
-            return;
-        }
-        let nx = m.cols.len();
-        for node in nodes {
-            let (z, omega) = (m.matches[node], m.node_weights[node]);
-            let (ox, oy) = (m.cols[node % nx], m.rows[node / nx]);
-            for dy in 0..m.size {
-                let y = if m.wrap { (oy + dy) % h } else { oy + dy };
-                let zy = z.y as usize + dy;
-                let falloff = &m.falloff[dy * m.size..(dy + 1) * m.size];
-                // The row's pixels as at most two runs of contiguous output columns (the second
-                // when the neighbourhood wraps past the right border), so the inner loops run
-                // over plain slices.
-                let first = if m.wrap { m.size.min(w - ox) } else { m.size };
-                for (x0, dx0, len) in [(ox, 0, first), (0, first, m.size - first)] {
-                    if len == 0 {
-                        continue;
-                    }
-                    let i = y * w + x0;
-                    let zi = zy * ew + z.x as usize + dx0;
-                    let g = &falloff[dx0..dx0 + len];
-                    let row_start = (dy * m.size + dx0) * c;
-                    accumulate(
-                        omega,
-                        g,
-                        &falloff_channels[row_start..row_start + len * c],
-                        &ex[zi * c..(zi + len) * c],
-                        &mut weight[i..i + len],
-                        &mut colour[i * c..(i + len) * c],
-                    );
-                    if gradient {
-                        // Forward differences of the exemplar, zero past its border (as in the
-                        // feature map the M-step compares).
-                        let zx = z.x as usize + dx0;
-                        let down = (zy + 1).min(eh - 1) * ew + zx;
-                        accumulate_differences(
-                            c,
-                            omega,
-                            g,
-                            &ex[(zy * ew + zx) * c..],
-                            &ex[down * c..],
-                            ew - zx,
-                            (&mut h_weight[i..i + len], &mut h_diff[i * c..(i + len) * c]),
-                            (&mut v_weight[i..i + len], &mut v_diff[i * c..(i + len) * c]),
-                        );
-                    }
+        let count = h.div_ceil(BAND_ROWS);
+        let mut slices = [
+            cut_bands(weight, w, count),
+            cut_bands(colour, w * c, count),
+            cut_bands(h_weight, w, count),
+            cut_bands(v_weight, w, count),
+            cut_bands(h_diff, w * c, count),
+            cut_bands(v_diff, w * c, count),
+        ]
+        .map(Vec::into_iter);
+        let mut bands: Vec<Band<'_>> = (0..count)
+            .map(|b| {
+                let [weight, colour, h_weight, v_weight, h_diff, v_diff] = slices
+                    .each_mut()
+                    .map(|it| it.next().expect("a slice per band"));
+                Band {
+                    rows: b * BAND_ROWS..h.min((b + 1) * BAND_ROWS),
+                    weight,
+                    colour,
+                    h_weight,
+                    v_weight,
+                    h_diff,
+                    v_diff,
                 }
+            })
+            .collect();
+        let falloff_channels = &falloff_channels[..];
+        parallel::for_each_piece_mut(&mut bands, 1, |_, band| {
+            let band = &mut band[0];
+            match plain {
+                Some(plain) => plain(m, nodes.clone(), w, falloff_channels, band),
+                None => band.add(m, nodes.clone(), (w, h, c), falloff_channels),
             }
-        }
+        });
     }
 
     /// Turns the sums into the output: the weighted average, or with the gradient term the
@@ -244,7 +226,129 @@ impl Sums {
     }
 }
 
-/// [`Sums::add`]'s colour sums for an output that does not wrap, without the gradient term,
+/// Output rows in a band of [`Sums::add`]: fixed, so the bands do not depend on the thread
+/// count.
+const BAND_ROWS: usize = 8;
+
+/// The sums of one band of output rows: the rows of `rows`, their slices of each sum.
+struct Band<'a> {
+    rows: std::ops::Range<usize>,
+    weight: &'a mut [f32],
+    colour: &'a mut [f32],
+    h_weight: &'a mut [f32],
+    v_weight: &'a mut [f32],
+    h_diff: &'a mut [f32],
+    v_diff: &'a mut [f32],
+}
+
+/// `values` (rows of `per_row` values) cut into `count` bands of [`BAND_ROWS`] rows; an empty
+/// `values` (a sum the E-step does not keep) gives empty bands.
+fn cut_bands(values: &mut [f32], per_row: usize, count: usize) -> Vec<&mut [f32]> {
+    if values.is_empty() {
+        (0..count).map(|_| <&mut [f32]>::default()).collect()
+    } else {
+        values.chunks_mut(BAND_ROWS * per_row).collect()
+    }
+}
+
+/// The signature of [`add_plain`]'s instances.
+type Plain = fn(&Matches<'_>, std::ops::Range<usize>, usize, &[f32], &mut Band<'_>);
+
+/// The nodes of `nodes`, in order, whose neighbourhood rows `oy..oy + size` (modulo `height`
+/// when the output wraps) reach the output rows `band`.
+fn nodes_reaching<'a>(
+    m: &'a Matches<'_>,
+    nodes: std::ops::Range<usize>,
+    band: std::ops::Range<usize>,
+    height: usize,
+) -> impl Iterator<Item = usize> + 'a {
+    let nx = m.cols.len();
+    let (size, wrap) = (m.size, m.wrap);
+    let reaches = move |oy: usize| {
+        let meets = |top: usize| top < band.end && top + size > band.start;
+        meets(oy) || (wrap && oy + size > height && band.start < oy + size - height)
+    };
+    let first_row = nodes.start / nx;
+    let last_row = nodes.end.div_ceil(nx);
+    (first_row..last_row)
+        .filter(move |&r| reaches(m.rows[r]))
+        .flat_map(move |r| (r * nx).max(nodes.start)..((r + 1) * nx).min(nodes.end))
+}
+
+impl Band<'_> {
+    /// Adds the matched neighbourhoods of `nodes` to this band's rows: any neighbourhood size,
+    /// wrapping outputs and the gradient term.
+    fn add(
+        &mut self,
+        m: &Matches<'_>,
+        nodes: std::ops::Range<usize>,
+        (w, h, c): (usize, usize, usize),
+        falloff_channels: &[f32],
+    ) {
+        let (ew, eh) = (m.exemplar.width(), m.exemplar.height());
+        let ex = m.exemplar.data();
+        let gradient = m.mu > 0.0;
+        let nx = m.cols.len();
+        let y0 = self.rows.start;
+        for node in nodes_reaching(m, nodes, self.rows.clone(), h) {
+            let (z, omega) = (m.matches[node], m.node_weights[node]);
+            let (ox, oy) = (m.cols[node % nx], m.rows[node / nx]);
+            for dy in 0..m.size {
+                let y = if m.wrap { (oy + dy) % h } else { oy + dy };
+                if !self.rows.contains(&y) {
+                    continue;
+                }
+                let zy = z.y as usize + dy;
+                let falloff = &m.falloff[dy * m.size..(dy + 1) * m.size];
+                // The row's pixels as at most two runs of contiguous output columns (the second
+                // when the neighbourhood wraps past the right border), so the inner loops run
+                // over plain slices.
+                let first = if m.wrap { m.size.min(w - ox) } else { m.size };
+                for (x0, dx0, len) in [(ox, 0, first), (0, first, m.size - first)] {
+                    if len == 0 {
+                        continue;
+                    }
+                    let i = (y - y0) * w + x0;
+                    let zi = zy * ew + z.x as usize + dx0;
+                    let g = &falloff[dx0..dx0 + len];
+                    let row_start = (dy * m.size + dx0) * c;
+                    accumulate(
+                        omega,
+                        g,
+                        &falloff_channels[row_start..row_start + len * c],
+                        &ex[zi * c..(zi + len) * c],
+                        &mut self.weight[i..i + len],
+                        &mut self.colour[i * c..(i + len) * c],
+                    );
+                    if gradient {
+                        // Forward differences of the exemplar, zero past its border (as in the
+                        // feature map the M-step compares).
+                        let zx = z.x as usize + dx0;
+                        let down = (zy + 1).min(eh - 1) * ew + zx;
+                        accumulate_differences(
+                            c,
+                            omega,
+                            g,
+                            &ex[(zy * ew + zx) * c..],
+                            &ex[down * c..],
+                            ew - zx,
+                            (
+                                &mut self.h_weight[i..i + len],
+                                &mut self.h_diff[i * c..(i + len) * c],
+                            ),
+                            (
+                                &mut self.v_weight[i..i + len],
+                                &mut self.v_diff[i * c..(i + len) * c],
+                            ),
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// [`Band::add`]'s colour sums for an output that does not wrap, without the gradient term,
 /// for neighbourhoods `N` pixels a side of `C` channels (`NC = N * C`): every row of a
 /// neighbourhood is one run of a length known at compile time, so a row costs its two slices
 /// and [`accumulate_any`]'s two loops, where the general loop also decided per row whether the
@@ -255,25 +359,29 @@ fn add_plain<const N: usize, const C: usize, const NC: usize>(
     nodes: std::ops::Range<usize>,
     w: usize,
     falloff_channels: &[f32],
-    weight: &mut [f32],
-    colour: &mut [f32],
+    band: &mut Band<'_>,
 ) {
     let (ew, ex) = (m.exemplar.width(), m.exemplar.data());
     let nx = m.cols.len();
     let fixed = "runs of the neighbourhood's size";
-    for node in nodes {
+    let rows = band.rows.clone();
+    for node in nodes_reaching(m, nodes, rows.clone(), usize::MAX) {
         let (z, omega) = (m.matches[node], m.node_weights[node]);
         let (ox, oy) = (m.cols[node % nx], m.rows[node / nx]);
-        for dy in 0..N {
-            let i = (oy + dy) * w + ox;
+        let first = rows.start.max(oy) - oy;
+        let last = (rows.end - oy).min(N);
+        for dy in first..last {
+            let i = (oy + dy - rows.start) * w + ox;
             let zi = (z.y as usize + dy) * ew + z.x as usize;
             let g: &[f32; N] = m.falloff[dy * N..(dy + 1) * N].try_into().expect(fixed);
             let g_channels: &[f32; NC] = falloff_channels[dy * NC..(dy + 1) * NC]
                 .try_into()
                 .expect(fixed);
             let z: &[f32; NC] = ex[zi * C..zi * C + NC].try_into().expect(fixed);
-            let weight: &mut [f32; N] = (&mut weight[i..i + N]).try_into().expect(fixed);
-            let colour: &mut [f32; NC] = (&mut colour[i * C..i * C + NC]).try_into().expect(fixed);
+            let weight: &mut [f32; N] = (&mut band.weight[i..i + N]).try_into().expect(fixed);
+            let colour: &mut [f32; NC] = (&mut band.colour[i * C..i * C + NC])
+                .try_into()
+                .expect(fixed);
             accumulate_any(omega, g, g_channels, z, weight, colour);
         }
     }
@@ -496,6 +604,50 @@ mod tests {
                 }
                 for (got, want) in out.pixel(x, y).iter().zip(num) {
                     assert!((f64::from(*got) - want / den).abs() < 1e-5);
+                }
+            }
+        }
+    }
+
+    /// A wrapping output taller than a band (three bands, neighbourhoods that wrap across the
+    /// bottom and right borders into the first band), added in uneven parts: every pixel is the
+    /// brute-force average of the neighbourhoods that cover it.
+    #[test]
+    fn bands_of_a_wrapping_output_equal_a_brute_force_average() {
+        let mut rng = Rng::new(33);
+        let exemplar = Image::from_fn(16, 14, 2, |_, _, _| rng.next_f32()).unwrap();
+        let (w, h, size) = (11, 2 * BAND_ROWS + 5, 5);
+        let cols: Vec<usize> = (0..w).step_by(2).collect();
+        let rows: Vec<usize> = (0..h).step_by(3).collect();
+        let nodes = cols.len() * rows.len();
+        let matches: Vec<Pos> = (0..nodes)
+            .map(|_| Pos::new(rng.index(16 - size + 1), rng.index(14 - size + 1)))
+            .collect();
+        let omegas: Vec<f32> = (0..nodes).map(|_| 0.5 + rng.next_f32()).collect();
+        let falloff = gaussian_falloff(size, 1);
+        let m = plain_matches(&exemplar, (&cols, &rows), &matches, &omegas, &falloff, true);
+        let mut out = Image::new(w, h, 2).unwrap();
+        let mut sums = Sums::new(&out, false);
+        for part in [0..7, 7..8, 8..nodes] {
+            sums.add(&m, part);
+        }
+        sums.finish(&m, &mut out, None);
+        for y in 0..h {
+            for x in 0..w {
+                let (mut num, mut den) = ([0.0f64; 2], 0.0f64);
+                for (node, z) in matches.iter().enumerate() {
+                    let (ox, oy) = (cols[node % cols.len()], rows[node / cols.len()]);
+                    let (dx, dy) = ((x + w - ox) % w, (y + h - oy) % h);
+                    if dx < size && dy < size {
+                        let g = f64::from(omegas[node] * falloff[dy * size + dx]);
+                        let p = exemplar.pixel(z.x as usize + dx, z.y as usize + dy);
+                        num[0] += g * f64::from(p[0]);
+                        num[1] += g * f64::from(p[1]);
+                        den += g;
+                    }
+                }
+                for (got, want) in out.pixel(x, y).iter().zip(num) {
+                    assert!((f64::from(*got) - want / den).abs() < 1e-5, "pixel {x}, {y}");
                 }
             }
         }

@@ -8,8 +8,8 @@
 //! and Kaspar et al. 2015 do in texture optimisation) puts the lost contrast back before the
 //! M-step sees it, and keeps the output's colour distribution the exemplar's.
 
-use crate::core::Image;
 use crate::core::math::greater;
+use crate::core::{Image, parallel};
 
 /// Buckets of the ranking between a channel's minimum and maximum (16 KB of counts: they stay
 /// in the first-level cache while a million pixels are ranked).
@@ -144,10 +144,15 @@ impl SortedChannels {
             let plain = fixed.is_none() && c == stride && matches!(c, 1 | 3);
             if plain {
                 let values = &mut data[range.start * stride..range.end * stride];
+                let tables = Tables {
+                    scale,
+                    transfer,
+                    strength,
+                };
                 if c == 1 {
-                    plain_pass::<1, 4>(*pass, values, lo, hi, scale, starts, transfer, strength);
+                    plain_pass::<1, 4>(*pass, values, lo, hi, starts, &tables);
                 } else {
-                    plain_pass::<3, 12>(*pass, values, lo, hi, scale, starts, transfer, strength);
+                    plain_pass::<3, 12>(*pass, values, lo, hi, starts, &tables);
                 }
             }
             // All channels in each pass over the interleaved values: the image is read three
@@ -247,74 +252,122 @@ impl SortedChannels {
     }
 }
 
+/// Pixels in a piece of a pass that runs in parallel ([`crate::core::parallel`]): fixed, so
+/// the pieces do not depend on the thread count. The minima, maxima and counts of the pieces
+/// combine exactly, and the new values are per value, so the result is the serial one.
+const PIECE_PIXELS: usize = 1 << 14;
+
+/// What the last two passes read, made between passes.
+struct Tables<'a> {
+    scale: &'a [f32; 4],
+    transfer: &'a [f32],
+    strength: f32,
+}
+
 /// One pass of [`SortedChannels::resume`] over `values`, whole pixels of `C` channels none of
-/// which is fixed; `N` is four pixels' values (`4 * C`). The range pass keeps `N` running
-/// minima and maxima (value `j` of every four pixels in lane `j`) and folds the lanes into the
-/// channels at the end: the same minimum and maximum, in a loop over fixed-size blocks.
-#[allow(clippy::too_many_arguments)]
+/// which is fixed; `N` is four pixels' values (`4 * C`). The pass runs over pieces of
+/// [`PIECE_PIXELS`] pixels in parallel: each piece's range or counts, then those combined in
+/// piece order; or each piece's new values.
 fn plain_pass<const C: usize, const N: usize>(
     pass: u8,
     values: &mut [f32],
     lo: &mut [f32; 4],
     hi: &mut [f32; 4],
-    scale: &[f32; 4],
     starts: &mut [u32],
-    transfer: &[f32],
-    strength: f32,
+    tables: &Tables<'_>,
 ) {
+    let piece = PIECE_PIXELS * C;
+    let pieces = values.len().div_ceil(piece);
+    let part = |p: usize| &values[p * piece..values.len().min((p + 1) * piece)];
     match pass {
         0 => {
-            let (mut low, mut high) = ([f32::INFINITY; N], [f32::NEG_INFINITY; N]);
-            let blocks = values.chunks_exact(N);
-            let rest = blocks.remainder();
-            let mut take = |lane: usize, v: f32| {
-                if v < low[lane] {
-                    low[lane] = v;
-                }
-                if v > high[lane] {
-                    high[lane] = v;
-                }
-            };
-            for block in blocks {
-                for (lane, &v) in block.iter().enumerate() {
-                    take(lane, v);
-                }
-            }
-            for (lane, &v) in rest.iter().enumerate() {
-                take(lane, v);
-            }
-            for lane in 0..N {
-                let k = lane % C;
-                if low[lane] < lo[k] {
-                    lo[k] = low[lane];
-                }
-                if high[lane] > hi[k] {
-                    hi[k] = high[lane];
+            for (low, high) in parallel::map(pieces, |p| range_pass::<C, N>(part(p))) {
+                for k in 0..C {
+                    if low[k] < lo[k] {
+                        lo[k] = low[k];
+                    }
+                    if high[k] > hi[k] {
+                        hi[k] = high[k];
+                    }
                 }
             }
         }
+        1 if pieces <= 1 => count_pass::<C>(values, lo, tables.scale, starts),
         1 => {
-            let mut tables = starts.chunks_exact_mut(BUCKETS + 1);
-            let counts: [&mut [u32; BUCKETS + 1]; C] = std::array::from_fn(|_| {
-                tables
-                    .next()
-                    .and_then(|t| t.try_into().ok())
-                    .expect("a table per channel")
+            let counts = parallel::map(pieces, |p| {
+                let mut counts = vec![0u32; C * (BUCKETS + 1)];
+                count_pass::<C>(part(p), lo, tables.scale, &mut counts);
+                counts
             });
-            for px in values.chunks_exact(C) {
-                for k in 0..C {
-                    counts[k][bucket(px[k], lo[k], scale[k]) + 1] += 1;
+            for counts in counts {
+                for (total, n) in starts.iter_mut().zip(counts) {
+                    *total += n;
                 }
             }
         }
         _ => {
             let transfers: [Transfer<'_>; C] =
-                std::array::from_fn(|k| Transfer::of(transfer, k, lo, scale));
-            for px in values.chunks_exact_mut(C) {
-                for (v, t) in px.iter_mut().zip(&transfers) {
-                    *v += strength * (t.value(*v) - *v);
+                std::array::from_fn(|k| Transfer::of(tables.transfer, k, lo, tables.scale));
+            let strength = tables.strength;
+            parallel::for_each_piece_mut(values, piece, |_, values| {
+                for px in values.chunks_exact_mut(C) {
+                    for (v, t) in px.iter_mut().zip(&transfers) {
+                        *v += strength * (t.value(*v) - *v);
+                    }
                 }
-            }
+            });
+        }
+    }
+}
+
+/// Each channel's minimum and maximum over `values` (NaNs left out). It keeps `N` running
+/// minima and maxima (value `j` of every four pixels in lane `j`) and folds the lanes into the
+/// channels at the end: the same minimum and maximum, in a loop over fixed-size blocks.
+fn range_pass<const C: usize, const N: usize>(values: &[f32]) -> ([f32; 4], [f32; 4]) {
+    let (mut low, mut high) = ([f32::INFINITY; N], [f32::NEG_INFINITY; N]);
+    let blocks = values.chunks_exact(N);
+    let rest = blocks.remainder();
+    let mut take = |lane: usize, v: f32| {
+        if v < low[lane] {
+            low[lane] = v;
+        }
+        if v > high[lane] {
+            high[lane] = v;
+        }
+    };
+    for block in blocks {
+        for (lane, &v) in block.iter().enumerate() {
+            take(lane, v);
+        }
+    }
+    for (lane, &v) in rest.iter().enumerate() {
+        take(lane, v);
+    }
+    let (mut lo, mut hi) = ([f32::INFINITY; 4], [f32::NEG_INFINITY; 4]);
+    for lane in 0..N {
+        let k = lane % C;
+        if low[lane] < lo[k] {
+            lo[k] = low[lane];
+        }
+        if high[lane] > hi[k] {
+            hi[k] = high[lane];
+        }
+    }
+    (lo, hi)
+}
+
+/// Adds the bucket counts of `values` to `starts` (a table of `BUCKETS + 1` per channel).
+fn count_pass<const C: usize>(values: &[f32], lo: &[f32; 4], scale: &[f32; 4], starts: &mut [u32]) {
+    let mut tables = starts.chunks_exact_mut(BUCKETS + 1);
+    let counts: [&mut [u32; BUCKETS + 1]; C] = std::array::from_fn(|_| {
+        tables
+            .next()
+            .and_then(|t| t.try_into().ok())
+            .expect("a table per channel")
+    });
+    for px in values.chunks_exact(C) {
+        for k in 0..C {
+            counts[k][bucket(px[k], lo[k], scale[k]) + 1] += 1;
         }
     }
 }
@@ -374,15 +427,22 @@ mod tests {
 
     /// The loops for whole pixels with nothing fixed give the general loops' values to the bit
     /// (an all-zero mask takes the general loops and fixes nothing), for grey and RGB (and the
-    /// general loops alone for two and four channels),
-    /// at full and half strength, in one run and resumed after an odd number of pixels.
+    /// general loops alone for two and four channels), at full and half strength, in one run
+    /// and resumed after an odd number of pixels; in one piece, and over several pieces (the
+    /// parallel passes) with a last one cut short.
     #[test]
     fn plain_pixel_loops_equal_the_general_loops_to_the_bit() {
+        for ((w, h), resume_after) in [((37, 29), 97), ((211, 173), 20_011)] {
+            plain_loops_equal_general_loops(w, h, resume_after);
+        }
+    }
+
+    fn plain_loops_equal_general_loops(w: usize, h: usize, resume_after: usize) {
         for channels in [1, 3, 2, 4] {
             let ex = noise(24, 20, channels, 3);
             // Values outside the exemplar's range, another range per channel, a flat run, and a
             // size that leaves a remainder after blocks of four pixels.
-            let out = Image::from_fn(37, 29, channels, |x, y, k| {
+            let out = Image::from_fn(w, h, channels, |x, y, k| {
                 let spread = 1.0 + k as f32;
                 if y == 3 {
                     0.5
@@ -391,7 +451,7 @@ mod tests {
                 }
             })
             .unwrap();
-            let none = vec![0.0f32; 37 * 29];
+            let none = vec![0.0f32; w * h];
             let sorted = SortedChannels::new(&ex);
             for strength in [1.0, 0.5] {
                 let mut general = out.clone();
@@ -407,7 +467,7 @@ mod tests {
                 let mut scratch = Scratch::default();
                 scratch.restart();
                 loop {
-                    let mut budget = 97;
+                    let mut budget = resume_after;
                     if sorted.resume(&mut resumed, strength, None, &mut scratch, &mut budget) {
                         break;
                     }
