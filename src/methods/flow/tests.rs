@@ -121,18 +121,20 @@ fn a_vortex_keeps_the_texture_while_the_naive_warp_smears_it() {
     let exemplar = sample("gravel_64");
     let (frames, naive, events) = animate(&exemplar, vortex(2.0), options(50));
     assert_eq!(frames.len(), 50);
-    // Observed on gravel_64 (64x64 frames, lambda 0.2): the flow-guided frames stay at about
-    // the first frame's coherence (0.92-1.04x); the naive warp reaches 2.5x, where the blur
-    // saturates at this size.
+    // Observed on gravel_64 (64x64 frames, lambda 0.2, seeds 1-4): the last frames' coherence
+    // is 0.0025-0.0029 and the first frame's 0.0020-0.0027, so the flow-guided frames stay
+    // within 1.45x of the first; the naive warp reaches 2.2-3.2x, where the blur saturates at
+    // this size. A first frame is one synthesis of 64x64, whose coherence varies by a third
+    // between seeds: the bounds leave room for that.
     let guided = relative_coherence(&exemplar, &frames[40..], &frames[0]);
     let smeared = relative_coherence(&exemplar, std::slice::from_ref(&naive), &frames[0]);
     assert!(
-        guided < 1.3,
+        guided < 1.6,
         "flow-guided frames: {guided:.2}x the first frame's coherence"
     );
     assert!(
-        smeared > 2.1,
-        "naive warp: {smeared:.2}x the first frame's coherence"
+        smeared > 2.1 && smeared > 2.0 * guided,
+        "naive warp: {smeared:.2}x the first frame's coherence, guided {guided:.2}x"
     );
     // The frames follow the flow: each is far closer to its predecessor carried along the flow
     // than an unrelated synthesis is (a different seed's first frame, carried the same way).

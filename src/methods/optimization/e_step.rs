@@ -186,13 +186,20 @@ impl Sums {
         }
         let out = output.data_mut();
         if !gradient {
-            for (i, &wsum) in weight.iter().enumerate() {
-                if wsum > 0.0 {
-                    for k in 0..c {
-                        out[i * c + k] = colour[i * c + k] / wsum;
+            // Per pixel, so in pieces of rows in parallel.
+            let rows = BAND_ROWS * w;
+            parallel::for_each_piece_mut(out, rows * c, |piece, out| {
+                let weight = &weight[piece * rows..];
+                let colour = &colour[piece * rows * c..];
+                for (i, px) in out.chunks_exact_mut(c).enumerate() {
+                    let wsum = weight[i];
+                    if wsum > 0.0 {
+                        for (v, &sum) in px.iter_mut().zip(&colour[i * c..(i + 1) * c]) {
+                            *v = sum / wsum;
+                        }
                     }
                 }
-            }
+            });
             return 0;
         }
         let system = ScreenedPoisson {
@@ -505,10 +512,8 @@ pub fn robust_weight(squared_distance: f32, r: f32) -> f32 {
 /// wasm).
 pub fn robust_weights(distances: &[f32], r: f32, weights: &mut Vec<f32>) -> f64 {
     let half_r = f64::from(r) / 2.0;
-    let mut sum = 0.0f64;
-    weights.clear();
-    for &d in distances {
-        let (weight, term) = if d.is_finite() {
+    let term = |d: f32| -> (f32, f64) {
+        if d.is_finite() {
             let weight = robust_weight(d, r);
             let term = if d.sqrt() >= MIN_DISTANCE {
                 f64::from(d) * f64::from(weight)
@@ -518,7 +523,18 @@ pub fn robust_weights(distances: &[f32], r: f32, weights: &mut Vec<f32>) -> f64 
             (weight, term)
         } else {
             (1.0, crate::core::math::pow(f64::from(d), half_r))
-        };
+        }
+    };
+    // The powers per node in pieces in parallel; the energy summed in node order, one node
+    // after another, so that it is the same to the bit at any thread count.
+    const PIECE: usize = 1 << 14;
+    let pieces = parallel::map(distances.len().div_ceil(PIECE), |p| {
+        let part = &distances[p * PIECE..distances.len().min((p + 1) * PIECE)];
+        part.iter().map(|&d| term(d)).collect::<Vec<_>>()
+    });
+    weights.clear();
+    let mut sum = 0.0f64;
+    for (weight, term) in pieces.into_iter().flatten() {
         weights.push(weight);
         sum += term;
     }

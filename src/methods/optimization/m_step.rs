@@ -59,9 +59,9 @@ impl Matcher {
     /// penalty), for queries made one node at a time (with soft-constraint weights when they
     /// carry them), and leaves each match's cost in `costs` (recomputed first: the queries
     /// changed in the E-step). Returns how many matches changed.
-    pub fn m_step(
+    pub fn m_step<Q: Queries + Clone + Send + Sync>(
         &self,
-        queries: &mut dyn Queries,
+        queries: &mut Q,
         objective: &Objective<'_>,
         grid: QueryGrid<'_>,
         matches: &mut [Pos],
@@ -94,9 +94,9 @@ impl Matcher {
     /// [`Matcher::m_step`] in parts: at most `limit` more node visits from where `progress`
     /// stopped, with the same result as one run. Returns true when the M-step is done.
     #[allow(clippy::too_many_arguments)]
-    pub fn resume(
+    pub fn resume<Q: Queries + Clone + Send + Sync>(
         &self,
-        queries: &mut dyn Queries,
+        queries: &mut Q,
         objective: &Objective<'_>,
         grid: QueryGrid<'_>,
         (matches, costs): (&mut [Pos], &mut [f32]),

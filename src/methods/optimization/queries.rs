@@ -8,7 +8,9 @@ use super::features::gather;
 use super::wavelet_energy::WaveletEnergy;
 use crate::solvers::nn::{FeatureMap, InPlace, Queries, Query};
 
-/// The queries of one M-step over a level's grid.
+/// The queries of one M-step over a level's grid (cloned per band of a parallel sweep: the
+/// scratch is each band's own).
+#[derive(Clone)]
 pub struct GridQueries<'a> {
     pub map: &'a FeatureMap,
     pub cols: &'a [usize],

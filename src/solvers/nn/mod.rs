@@ -113,6 +113,10 @@ pub struct Progress {
     /// M-step). PatchMatch reads it to skip a propagated candidate it has already tried.
     changed: Vec<u8>,
     query: Query,
+    /// PatchMatch: the matches as the sweep under way found them (what propagation reads
+    /// across a band's edge), and the seed of the M-step's per-band random streams.
+    snapshot: Vec<Pos>,
+    seed: u64,
 }
 
 impl Progress {
@@ -124,6 +128,8 @@ impl Progress {
             next: 0,
             changed: vec![0; nodes],
             query: Query::default(),
+            snapshot: Vec::new(),
+            seed: 0,
         }
     }
 
@@ -264,6 +270,7 @@ impl Search {
         }
     }
 
+    /// The search of that name (see [`Search::name`]); `None` for an unknown one.
     #[must_use]
     pub fn from_name(name: &str) -> Option<Search> {
         [Search::Exact, Search::KMeansTree, Search::PatchMatch]

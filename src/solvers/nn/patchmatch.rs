@@ -5,8 +5,8 @@
 //! iterations.
 
 use super::patches::{Neighbourhoods, Pos};
-use super::{Objective, Progress, Queries};
-use crate::core::Rng;
+use super::{Objective, Progress, Queries, Query};
+use crate::core::{Rng, parallel};
 
 /// The layout of the query grid: column and row positions (in output pixels) of the nodes. Nodes
 /// are stored row by row; query `i` is node `(i % cols.len(), i / cols.len())`.
@@ -16,15 +16,25 @@ pub struct QueryGrid<'a> {
     pub rows: &'a [usize],
 }
 
+/// Node rows in a band of a sweep. A sweep searches its bands in parallel (with the `parallel`
+/// feature), each in scan order (reversed in backward sweeps). Propagation inside a band reads
+/// the matches it has just improved, as one sweep over the grid does; across a band's edge it
+/// reads the neighbour's match from the start of the sweep, and random search draws from the
+/// band's own stream. So a band never reads what another band writes in the same sweep, and
+/// the matches are the same at any thread count. Eight rows: at 1024x1024 and neighbourhoods
+/// of 8 (a node every 2 pixels) a band is 4,096 nodes, and a step's share of an M-step (about
+/// 10,000 visits) is several bands.
+pub const BAND_ROWS: usize = 8;
+
 /// Improves `matches` in place by `passes` alternating forward/backward sweeps and leaves their
 /// costs in `distances` (the first sweep computes each node's cost for its current match when
 /// it gets there: the queries changed since the last M-step). A match only ever changes to a
 /// strictly closer one, so the cost cannot rise. Costs are those of `objective` (the plain
 /// distance by default). Queries are made one node at a time. Returns how many nodes changed.
 #[allow(clippy::too_many_arguments)]
-pub fn improve(
+pub fn improve<Q: Queries + Clone + Send + Sync>(
     space: &Neighbourhoods,
-    queries: &mut dyn Queries,
+    queries: &Q,
     objective: &Objective<'_>,
     grid: QueryGrid<'_>,
     matches: &mut [Pos],
@@ -50,35 +60,113 @@ pub struct Search<'a> {
     pub grid: QueryGrid<'a>,
 }
 
+/// One band of a sweep: its first node, and its nodes' matches, costs and change marks.
+struct Band<'a> {
+    index: usize,
+    start: usize,
+    matches: &'a mut [Pos],
+    distances: &'a mut [f32],
+    changed: &'a mut [u8],
+}
+
 impl Search<'_> {
-    /// [`improve`] in parts: visits at most `limit` more nodes from where `progress` stopped
-    /// (the sweeps run in a fixed order, so stopping and resuming gives the same matches as one
-    /// run). Returns true when every sweep is done.
-    pub fn resume(
+    /// [`improve`] in parts: visits whole bands of nodes from where `progress` stopped, about
+    /// `limit` visits, in whole bands and at least a band per thread (the sweeps run in a fixed
+    /// order and bands do not depend on each other within a sweep, so stopping and resuming
+    /// gives the same matches as one run). Returns true when every sweep is done.
+    pub fn resume<Q: Queries + Clone + Send + Sync>(
         &self,
-        queries: &mut dyn Queries,
+        queries: &Q,
         matches: &mut [Pos],
         distances: &mut [f32],
         rng: &mut Rng,
         progress: &mut Progress,
         limit: usize,
     ) -> bool {
+        let nodes = matches.len();
+        let band_len = BAND_ROWS * self.grid.cols.len();
+        let mut visited = 0;
+        while progress.pass < progress.passes && visited < limit {
+            if progress.next == 0 {
+                if progress.pass == 0 {
+                    // The M-step's random streams, one per band, from one draw.
+                    progress.seed = rng.next_u64();
+                }
+                progress.snapshot.clear();
+                progress.snapshot.extend_from_slice(matches);
+            }
+            let pass = progress.pass;
+            // Bands in a batch: what `limit` asks for, and at least one per thread, in whole
+            // rounds of the threads (where a batch ends changes no match).
+            let threads = parallel::threads();
+            let bands = (limit - visited)
+                .div_ceil(band_len)
+                .max(1)
+                .div_ceil(threads)
+                .saturating_mul(threads);
+            let range =
+                progress.next..nodes.min(progress.next.saturating_add(bands.saturating_mul(band_len)));
+            let first_band = progress.next / band_len;
+            let Progress {
+                changed,
+                snapshot,
+                seed,
+                ..
+            } = progress;
+            let mut bands: Vec<Band<'_>> = matches[range.clone()]
+                .chunks_mut(band_len)
+                .zip(distances[range.clone()].chunks_mut(band_len))
+                .zip(changed[range.clone()].chunks_mut(band_len))
+                .enumerate()
+                .map(|(k, ((matches, distances), changed))| Band {
+                    index: first_band + k,
+                    start: range.start + k * band_len,
+                    matches,
+                    distances,
+                    changed,
+                })
+                .collect();
+            let (snapshot, seed) = (&snapshot[..], *seed);
+            parallel::for_each_piece_mut(&mut bands, 1, |_, band| {
+                self.sweep_band(queries, pass, &mut band[0], snapshot, seed);
+            });
+            visited += range.len();
+            progress.next = range.end;
+            if progress.next >= nodes {
+                progress.next = 0;
+                progress.pass += 1;
+            }
+        }
+        progress.is_done()
+    }
+
+    /// Sweep `pass` over one band's nodes.
+    fn sweep_band<Q: Queries + Clone>(
+        &self,
+        queries: &Q,
+        pass: usize,
+        band: &mut Band<'_>,
+        snapshot: &[Pos],
+        seed: u64,
+    ) {
         let Search {
             space,
             objective,
             grid,
         } = *self;
+        let mut queries = queries.clone();
+        let mut query = Query::default();
+        let mut rng = Rng::with_stream(seed, band.index as u64);
         let (nx, ny) = (grid.cols.len(), grid.rows.len());
         let (ex, ey) = space.extent();
         let max_radius = ex.max(ey) as i64;
-        let mut query = std::mem::take(&mut progress.query);
-        let mut visited = 0;
-        while progress.pass < progress.passes && visited < limit {
-            let pass = progress.pass;
-            let forward = pass.is_multiple_of(2);
-            let step: isize = if forward { 1 } else { -1 };
-            let k = progress.next;
-            let i = if forward { k } else { nx * ny - 1 - k };
+        let forward = pass.is_multiple_of(2);
+        let step: isize = if forward { 1 } else { -1 };
+        let len = band.matches.len();
+        let own = band.start..band.start + len;
+        for k in 0..len {
+            let local = if forward { k } else { len - 1 - k };
+            let i = band.start + local;
             let (gx, gy) = (i % nx, i / nx);
             if queries.in_place(i).is_none() {
                 queries.fill(i, &mut query);
@@ -89,9 +177,9 @@ impl Search<'_> {
                 None => objective.cost(space, &query, candidate, bound),
             };
             if pass == 0 {
-                distances[i] = cost(matches[i], f32::INFINITY);
+                band.distances[local] = cost(band.matches[local], f32::INFINITY);
             }
-            let mut best = (matches[i], distances[i]);
+            let mut best = (band.matches[local], band.distances[local]);
             let consider = |candidate: Pos, best: &mut (Pos, f32)| {
                 if candidate != best.0 {
                     let d = cost(candidate, best.1);
@@ -100,21 +188,30 @@ impl Search<'_> {
                     }
                 }
             };
-            // Propagation from the already-visited horizontal and vertical neighbours. The
-            // sweep two before this one ran in the same direction, against the same queries and
-            // costs, and tried the same neighbours' candidates: a neighbour whose match has not
-            // changed since then offers one that lost already and would lose again (this
-            // node's best only got closer), so it is not measured twice.
-            let tried = |j: usize| pass >= 2 && !progress.changed_since(j, pass - 1);
+            // Propagation from the already-visited horizontal and vertical neighbours: in this
+            // band, their matches as this sweep left them; past its edge, as the sweep found
+            // them. In this band, the sweep two before this one ran in the same direction,
+            // against the same queries and costs, and tried the same neighbours' candidates: a
+            // neighbour whose match has not changed since then offers one that lost already and
+            // would lose again (this node's best only got closer), so it is not measured twice.
+            let neighbour = |j: usize| -> Option<Pos> {
+                if !own.contains(&j) {
+                    return Some(snapshot[j]);
+                }
+                let tried = pass >= 2 && usize::from(band.changed[j - band.start]) < pass;
+                (!tried).then(|| band.matches[j - band.start])
+            };
             let qx = gx as isize - step;
-            if (0..nx as isize).contains(&qx) && !tried(gy * nx + qx as usize) {
-                let m = matches[gy * nx + qx as usize];
+            if (0..nx as isize).contains(&qx)
+                && let Some(m) = neighbour(gy * nx + qx as usize)
+            {
                 let shift = grid.cols[gx] as i64 - grid.cols[qx as usize] as i64;
                 consider(space.clamp_from(m, shift, 0), &mut best);
             }
             let qy = gy as isize - step;
-            if (0..ny as isize).contains(&qy) && !tried(qy as usize * nx + gx) {
-                let m = matches[qy as usize * nx + gx];
+            if (0..ny as isize).contains(&qy)
+                && let Some(m) = neighbour(qy as usize * nx + gx)
+            {
                 let shift = grid.rows[gy] as i64 - grid.rows[qy as usize] as i64;
                 consider(space.clamp_from(m, 0, shift), &mut best);
             }
@@ -134,17 +231,12 @@ impl Search<'_> {
                 consider(space.clamp_from(best.0, dx, dy), &mut best);
                 radius /= 2;
             }
-
-            if best.0 != matches[i] {
-                progress.mark_changed(i);
+            if best.0 != band.matches[local] {
+                band.changed[local] = u8::try_from(pass + 1).unwrap_or(u8::MAX);
             }
-            matches[i] = best.0;
-            distances[i] = best.1;
-            visited += 1;
-            progress.advance(nx * ny);
+            band.matches[local] = best.0;
+            band.distances[local] = best.1;
         }
-        progress.query = query;
-        progress.is_done()
     }
 }
 
