@@ -35,20 +35,33 @@
 //! decoding, resampling, pyramids, the seeded random numbers, errors), `solvers` (max-flow,
 //! FFT search, nearest-neighbour searches, Poisson, wavelets, thin-plate splines), `methods`
 //! (one module per paper) and, in the wasm build only, `bindings` (the JavaScript API). The
-//! modules re-exported here are the supported surface; the layers themselves are public for the
-//! project's benchmarks and fuzz targets, hidden from these docs, and not part of the API.
+//! modules re-exported here are the supported surface; the layers themselves are private (the
+//! `internals` feature opens them to the project's benchmarks and fuzz targets; it is not part of
+//! the API).
 #![warn(missing_docs)]
+
+/// Declares an internal layer: private to the crate, and public (hidden from the docs) with the
+/// `internals` feature, which only the project's benchmarks and fuzz targets turn on. Much of
+/// the layers serves the JS bindings alone, so dead code is linted in the wasm build, where the
+/// bindings call it, and not in the native one.
+macro_rules! layer {
+    ($name:ident) => {
+        #[cfg(feature = "internals")]
+        #[doc(hidden)]
+        pub mod $name;
+        #[cfg(not(feature = "internals"))]
+        #[cfg_attr(not(target_arch = "wasm32"), allow(dead_code, unused_imports))]
+        mod $name;
+    };
+}
 
 #[cfg(target_arch = "wasm32")]
 #[doc(hidden)]
 pub mod bindings;
-#[doc(hidden)]
-pub mod core;
-#[doc(hidden)]
-pub mod methods;
+layer!(core);
+layer!(methods);
 mod session;
-#[doc(hidden)]
-pub mod solvers;
+layer!(solvers);
 
 pub use crate::core::{Error, Image, Result, decode, encode_png, from_rgba8, to_rgba8};
 pub use crate::methods::quality::{Quality, quality};

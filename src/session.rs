@@ -145,7 +145,7 @@ impl Session for video::Session {
         video::Session::is_done(self)
     }
 
-    /// The first output frame; [`video::teaching::frame_rgba`] gives any other.
+    /// The first output frame; `video::teaching::frame_rgba` gives any other.
     fn output(&self) -> Result<Image> {
         let (w, h, _) = self.size();
         let mut rgba = vec![0u8; w * h * 4];

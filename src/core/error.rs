@@ -14,25 +14,37 @@ pub enum Error {
     Encode(String),
     /// A width or height of zero, or a size that does not fit the limits.
     InvalidSize {
+        /// What has the size ("exemplar", "output", "crop", ...), as the message names it.
         what: &'static str,
+        /// The width given, in pixels.
         width: usize,
+        /// The height given, in pixels.
         height: usize,
+        /// Why the size is refused.
         reason: String,
     },
     /// A buffer whose length does not match the size it is said to have.
     LengthMismatch {
+        /// The buffer, as the message names it.
         what: &'static str,
+        /// The length the stated size calls for.
         expected: usize,
+        /// The length the buffer has.
         actual: usize,
     },
     /// A channel count other than 1 to 4.
     UnsupportedChannels(usize),
     /// A named option or parameter with an impossible value.
-    InvalidParameter { name: &'static str, reason: String },
+    InvalidParameter {
+        /// The option or parameter, as the message names it.
+        name: &'static str,
+        /// What is wrong with its value.
+        reason: String,
+    },
     /// An option name that the method does not know.
     UnknownOption(String),
     /// A session whose estimated working set exceeds its memory budget (see
-    /// [`crate::core::budget`]); the message names the size, the estimate and the limit.
+    /// `crate::core::budget`); the message names the size, the estimate and the limit.
     MemoryBudget(String),
 }
 

@@ -63,16 +63,19 @@ impl Image {
         Ok(image)
     }
 
+    /// Width in pixels.
     #[must_use]
     pub fn width(&self) -> usize {
         self.width
     }
 
+    /// Height in pixels.
     #[must_use]
     pub fn height(&self) -> usize {
         self.height
     }
 
+    /// Values per pixel, 1 to 4.
     #[must_use]
     pub fn channels(&self) -> usize {
         self.channels
@@ -90,10 +93,12 @@ impl Image {
         &self.data
     }
 
+    /// The interleaved values, row by row, for writing.
     pub fn data_mut(&mut self) -> &mut [f32] {
         &mut self.data
     }
 
+    /// The interleaved values, row by row, without copying them.
     #[must_use]
     pub fn into_vec(self) -> Vec<f32> {
         self.data
@@ -114,6 +119,7 @@ impl Image {
         &self.data[i..i + self.channels]
     }
 
+    /// The channel values of pixel (x, y), for writing.
     #[inline]
     pub fn pixel_mut(&mut self, x: usize, y: usize) -> &mut [f32] {
         let i = self.index(x, y);

@@ -22,15 +22,26 @@ pub const MAX_DEFORMATIONS: usize = 64;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Deformation {
     /// Rotation by `degrees`, counter-clockwise as seen on screen.
-    Rotate { degrees: f64 },
+    Rotate {
+        /// Angle in degrees, any finite value; multiples of 90 are exact.
+        degrees: f64,
+    },
     /// Cyclic translation: pixel (x, y) moves to (x + dx, y + dy) modulo the size.
-    Shift { dx: isize, dy: isize },
+    Shift {
+        /// Horizontal shift in pixels, to the right.
+        dx: isize,
+        /// Vertical shift in pixels, downwards.
+        dy: isize,
+    },
     /// Left-right reflection.
     Mirror,
     /// Top-bottom reflection.
     Flip,
     /// Resize by `factor` in both directions.
-    Scale { factor: f64 },
+    Scale {
+        /// Scale factor, 0.25 to 4 ([`SCALE_RANGE`]); below 1 shrinks by area averaging.
+        factor: f64,
+    },
 }
 
 impl Deformation {
@@ -112,8 +123,11 @@ pub fn deform(image: &Image, deformations: &[Deformation]) -> Result<Image> {
 /// An inclusive range `from..=to` walked in steps of `step`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Steps {
+    /// First value.
     pub from: f64,
+    /// Last value, included when the steps reach it; at least `from`.
     pub to: f64,
+    /// Step between values, greater than 0.
     pub step: f64,
 }
 
@@ -158,7 +172,9 @@ pub struct DeformationRanges {
     pub scale: Option<Steps>,
     /// Cyclic shifts as a fraction of the size, applied along both axes.
     pub shift: Option<Steps>,
+    /// Also the mirrored (left-right reflected) texture.
     pub mirror: bool,
+    /// Also the flipped (top-bottom reflected) texture.
     pub flip: bool,
 }
 

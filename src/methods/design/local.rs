@@ -15,13 +15,14 @@ pub use super::memory::UNDO_BUDGET_BYTES;
 /// Options of the brush.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BrushOptions {
+    /// Weights nu, k1 and k2 of the labelling energy (eqs. 1-3). Default: 1000, 0.5, 0.5.
     pub weights: LabellingWeights,
     /// Pixels of reference around the stroke's bounding box that I_s takes, so that the cut
     /// has room to find a seam where base and reference agree. Default: 12.
     pub margin: usize,
     /// Gradient-domain paste (true) or the plain cut-and-paste of the labelling. Default: true.
     pub poisson: bool,
-    /// The memory budget in MiB (see [`crate::core::budget`]): a base whose working set would
+    /// The memory budget in MiB (see `crate::core::budget`): a base whose working set would
     /// exceed it is refused. Default: 1024.
     pub memory_budget_mib: usize,
 }
@@ -38,6 +39,7 @@ impl Default for BrushOptions {
 }
 
 impl BrushOptions {
+    /// Checks every option: weights finite and >= 0 (nu at most 1e9), margin at most 256.
     pub fn validate(&self) -> Result<()> {
         self.weights.validate()?;
         if self.margin > 256 {
@@ -53,9 +55,13 @@ impl BrushOptions {
 /// A stroke: a mask over the reference (true where painted) and the offset that carries a
 /// reference pixel (x, y) to the base pixel (x + dx, y + dy).
 pub struct Stroke<'a> {
+    /// The reference texture the designer paints over.
     pub reference: &'a Image,
+    /// True where painted: one value per reference pixel, row by row.
     pub mask: &'a [bool],
+    /// Horizontal offset from the reference to the base, in pixels.
     pub dx: isize,
+    /// Vertical offset from the reference to the base, in pixels.
     pub dy: isize,
 }
 
@@ -64,8 +70,11 @@ pub struct Stroke<'a> {
 pub struct StrokeResult {
     /// The window on the base that the cut worked on.
     pub x: usize,
+    /// Top of that window.
     pub y: usize,
+    /// Width of that window.
     pub width: usize,
+    /// Height of that window.
     pub height: usize,
     /// Per window pixel: 0 kept the base, 1 took I_s, 2 took I_s and was brushed (Fig. 3e).
     pub labels: Vec<u8>,
@@ -86,6 +95,7 @@ pub struct LocalDeformation {
 }
 
 impl LocalDeformation {
+    /// A brush on a copy of `base`; fails on a bad option or a base beyond the memory budget.
     pub fn new(base: &Image, options: BrushOptions) -> Result<Self> {
         options.validate()?;
         crate::core::budget::validate_budget(options.memory_budget_mib)?;
@@ -103,7 +113,7 @@ impl LocalDeformation {
         })
     }
 
-    /// The estimated working set (see [`super::memory`]).
+    /// The estimated working set (see `super::memory`).
     #[must_use]
     pub fn working_set(&self) -> crate::core::budget::WorkingSet {
         let b = &self.base;

@@ -20,7 +20,7 @@ pub struct TileableOptions {
     pub overlap_x: Option<usize>,
     /// m_v: rows the halves overlap. Default (None): a sixth of the height, at most 64.
     pub overlap_y: Option<usize>,
-    /// The memory budget in MiB (see [`crate::core::budget`]); `None`: the default, 1024.
+    /// The memory budget in MiB (see `crate::core::budget`); `None`: the default, 1024.
     pub memory_budget_mib: Option<usize>,
 }
 
@@ -34,9 +34,11 @@ pub struct Tileable {
     pub image: Image,
     /// Where the image was cut open (column, then row of the horizontally stitched image).
     pub cut_x: usize,
+    /// The row where the horizontally stitched image was cut open (`cut_x` is the column).
     pub cut_y: usize,
     /// Cost of each stitch's minimum cut (sum of M over the seam).
     pub seam_cost_x: f64,
+    /// Cost of the vertical stitch's minimum cut (`seam_cost_x` is the horizontal one's).
     pub seam_cost_y: f64,
     /// Per output pixel: true on a pixel next to either seam (for display).
     pub seam: Vec<bool>,
@@ -66,7 +68,9 @@ pub struct TileableEvent {
     pub vertical: bool,
     /// Where the image was cut open.
     pub cut: usize,
+    /// Cost of this stitch's minimum cut (sum of M over the seam).
     pub seam_cost: f64,
+    /// True once both stitches are made: on the vertical stitch, and on any step after it.
     pub done: bool,
 }
 
@@ -116,12 +120,13 @@ impl TileableSession {
         })
     }
 
+    /// Whether both stitches are made.
     #[must_use]
     pub fn is_done(&self) -> bool {
         self.result.is_some()
     }
 
-    /// The estimated working set (see [`super::memory`]).
+    /// The estimated working set (see `super::memory`).
     #[must_use]
     pub fn working_set(&self) -> crate::core::budget::WorkingSet {
         let i = &self.input;

@@ -48,6 +48,7 @@ impl Default for DetectOptions {
 }
 
 impl DetectOptions {
+    /// Checks the options: the percentile (JS `threshold`) in 0.5..0.999, alpha in 0..1.
     pub fn validate(&self) -> Result<()> {
         if !self.percentile.is_finite() || !(0.5..=0.999).contains(&self.percentile) {
             return Err(Error::InvalidParameter {
@@ -76,10 +77,16 @@ pub const BUCKETS: usize = 4;
 /// and the detector's response.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FeatureMap {
+    /// Width in pixels, the image's.
     pub width: usize,
+    /// Height in pixels, the image's.
     pub height: usize,
+    /// True on a curve pixel: one value per pixel, row by row.
     pub mask: Vec<bool>,
+    /// The smoothed tangent angle at every pixel, in radians, 0..pi.
     pub angle: Vec<f32>,
+    /// The detector's response at every pixel: gradient magnitude (edges), |Laplacian|
+    /// (ridges) or the larger of the two (both).
     pub response: Vec<f32>,
     /// The absolute high threshold used (to detect on other images the same way).
     pub threshold: f32,

@@ -21,6 +21,7 @@ pub enum FeaturePlacement {
 }
 
 impl FeaturePlacement {
+    /// The name used in options ("graphcut", "scan").
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
@@ -29,6 +30,7 @@ impl FeaturePlacement {
         }
     }
 
+    /// The placement of that name (see [`FeaturePlacement::name`]); `None` for an unknown one.
     #[must_use]
     pub fn from_name(name: &str) -> Option<FeaturePlacement> {
         [FeaturePlacement::Graphcut, FeaturePlacement::Scan]
@@ -42,6 +44,7 @@ impl FeaturePlacement {
 pub struct FeatureOptions {
     /// Output size. Default: 256x256.
     pub output_width: usize,
+    /// Output height in pixels. Default: 256.
     pub output_height: usize,
     /// How patches are laid down. Default: graph-cut placement.
     pub placement: FeaturePlacement,
@@ -73,9 +76,13 @@ pub struct FeatureOptions {
     /// Extra inputs: deformed copies of the exemplar (the paper adds rotated and reflected ones
     /// for some textures). Default: none.
     pub extra_inputs: Vec<Deformation>,
+    /// How the feature maps of the exemplar and the extra inputs are detected (kind, threshold
+    /// percentile, alpha). Default: ridges, 0.9, 0.3.
     pub detect: DetectOptions,
+    /// Seed of every random choice (the candidate drawn, graph-cut placement's offsets).
+    /// Default: 1.
     pub seed: u64,
-    /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses an
+    /// The memory budget in MiB (see `crate::core::budget`): the constructor refuses an
     /// output whose working set would exceed it. Default: 1024.
     pub memory_budget_mib: usize,
 }
@@ -138,6 +145,8 @@ impl Default for FeatureOptions {
 }
 
 impl FeatureOptions {
+    /// The context-region width (scan), or the feature-cost band's (graph cut): the option, or
+    /// a quarter of the patch side, at least 2.
     #[must_use]
     pub fn zone(&self) -> usize {
         self.overlap.unwrap_or((self.patch() / 4).max(2))

@@ -26,22 +26,34 @@ use crate::solvers::maxflow::Graph;
 /// What one step did.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FeatureEvent {
+    /// Index of the patch placed, 0 for the first.
     pub patch: usize,
+    /// Patches the output takes (with graph-cut placement, a lower bound that grows until the
+    /// output is covered).
     pub patches: usize,
     /// Where the patch went in the output, and where it came from (input index, top-left).
     pub x: usize,
+    /// Top of the patch in the output.
     pub y: usize,
+    /// The input the patch came from: 0 the exemplar, then `extra_inputs` in order.
     pub input: usize,
+    /// Left of the patch in its input.
     pub source_x: usize,
+    /// Top of the patch in its input.
     pub source_y: usize,
     /// Eq. 2 and the mean squared colour difference of the chosen candidate.
     pub feature_cost: f32,
+    /// Mean squared colour difference of the chosen candidate.
     pub colour_cost: f32,
+    /// Feature pixels in the patch's context region (graph-cut placement: in the feature band).
     pub context_features: usize,
+    /// Feature correspondences the warp used (0 with graph-cut placement, which does not warp).
     pub correspondences: usize,
+    /// The warp applied to the patch ([`WarpKind::None`] with graph-cut placement).
     pub warp: WarpKind,
     /// True when the choice used colour only (no oriented features to match).
     pub colour_only: bool,
+    /// True on the last step, and on any step after it (which repeats the last event).
     pub done: bool,
 }
 
@@ -197,7 +209,7 @@ impl FeatureSynthesis {
         })
     }
 
-    /// The estimated working set (see [`super::memory`]).
+    /// The estimated working set (see `super::memory`).
     #[must_use]
     pub fn working_set(&self) -> crate::core::budget::WorkingSet {
         let graphcut = self
@@ -212,6 +224,7 @@ impl FeatureSynthesis {
         )
     }
 
+    /// Whether the output is finished: every scan position filled, or graph-cut placement done.
     #[must_use]
     pub fn is_done(&self) -> bool {
         match &self.graphcut {
@@ -220,6 +233,7 @@ impl FeatureSynthesis {
         }
     }
 
+    /// The output as far as it is made.
     #[must_use]
     pub fn image(&self) -> &Image {
         match &self.graphcut {
@@ -249,11 +263,13 @@ impl FeatureSynthesis {
         }
     }
 
+    /// The last placement (its box, context region, correspondences, warp grid), for the views.
     #[must_use]
     pub fn placement(&self) -> &Placement {
         &self.placement
     }
 
+    /// The options, with the default patch side fitted to the exemplar.
     #[must_use]
     pub fn options(&self) -> &FeatureOptions {
         &self.options

@@ -74,16 +74,19 @@ impl FlowField {
         Self::from_vec(width, height, data)
     }
 
+    /// Width in pixels.
     #[must_use]
     pub fn width(&self) -> usize {
         self.width
     }
 
+    /// Height in pixels.
     #[must_use]
     pub fn height(&self) -> usize {
         self.height
     }
 
+    /// The interleaved `(vx, vy)` displacements in pixels per frame, row by row.
     #[must_use]
     pub fn data(&self) -> &[f32] {
         &self.data

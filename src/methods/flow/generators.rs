@@ -20,14 +20,20 @@ use crate::core::{Error, Result};
 /// What a component does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FlowKind {
+    /// Towards the centre, faster with the distance from it (divergence -2s/R).
     Sink,
+    /// Away from the centre, faster with the distance from it (divergence 2s/R).
     Source,
+    /// Rigid rotation about the centre, counter-clockwise on screen for a positive strength.
     Vortex,
+    /// Along the direction at `angle`, by the signed distance across it from the centre.
     Shear,
+    /// Everywhere `strength` pixels per frame along the direction at `angle`.
     Translation,
 }
 
 impl FlowKind {
+    /// Every kind (the names [`FlowKind::from_name`] knows).
     pub const ALL: [FlowKind; 5] = [
         FlowKind::Sink,
         FlowKind::Source,
@@ -48,6 +54,7 @@ impl FlowKind {
         }
     }
 
+    /// The kind of that name (see [`FlowKind::name`]); `None` for an unknown one.
     #[must_use]
     pub fn from_name(name: &str) -> Option<FlowKind> {
         Self::ALL.into_iter().find(|k| k.name() == name)
@@ -57,6 +64,7 @@ impl FlowKind {
 /// One term of a flow.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Component {
+    /// What the component does.
     pub kind: FlowKind,
     /// Pixels per frame at distance R from the centre (translation: everywhere).
     pub strength: f32,
@@ -148,6 +156,7 @@ impl Component {
 /// A flow: the sum of its components (one for the plain kinds, several for combinations).
 #[derive(Debug, Clone, PartialEq)]
 pub struct FlowSpec {
+    /// The terms, summed (1 to 16, each checked, when built by [`FlowSpec::new`]).
     pub components: Vec<Component>,
 }
 

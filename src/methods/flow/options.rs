@@ -32,6 +32,7 @@ impl FlowSource {
 pub struct FlowOptions {
     /// Frame width and height. Default: 128x128.
     pub output_width: usize,
+    /// Frame height in pixels. Default: 128.
     pub output_height: usize,
     /// Frames to make, the first included. Default: 60.
     pub frames: usize,
@@ -54,8 +55,12 @@ pub struct FlowOptions {
     pub frame_iterations: usize,
     /// Seed, search, robust exponent r and wrap-around, shared with the first frame.
     pub seed: u64,
+    /// Nearest-neighbourhood search of every frame's M-step. Default: PatchMatch.
     pub search: Search,
+    /// Exponent of the robust energy, in (0, 2] (2 is the plain quadratic). Default: 0.8.
     pub r: f32,
+    /// Periodic frames: neighbourhoods and the flow's warp wrap around the borders, so every
+    /// frame tiles. Default: false.
     pub tileable: bool,
     /// Histogram matching after every E-step, of the first frame and of every later frame
     /// (see `optimization::histogram`); 0 turns it off. In frames after the first it applies to
@@ -64,7 +69,7 @@ pub struct FlowOptions {
     /// texture, and contrast drains away frame after frame (tiles_128, vortex, 256x256: the
     /// flat fraction of frames 30-60 reaches 3.8x frame 1's). Default: 1.
     pub histogram_matching: f32,
-    /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses a frame
+    /// The memory budget in MiB (see `crate::core::budget`): the constructor refuses a frame
     /// size whose working set would exceed it. Default: 1024.
     pub memory_budget_mib: usize,
     /// Matches at half-pixel precision (see `optimization::phases`): content carried along the

@@ -25,7 +25,7 @@ const FRAME_PATCHMATCH_PASSES: usize = 2;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FlowEventKind {
     /// Part of an iteration: on large frames an iteration is split over several steps (see
-    /// [`SPLIT_PIXELS`](optimization::iteration::SPLIT_PIXELS)), and setting up a frame (the
+    /// `SPLIT_PIXELS`), and setting up a frame (the
     /// warp, the matches moved along the flow) is a step of its own; the event names the phase
     /// and the share of the iteration done.
     Part,
@@ -40,6 +40,7 @@ pub enum FlowEventKind {
 /// The report of one step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FlowEvent {
+    /// What the step did; [`FlowEventKind::Done`] on the last step and any after it.
     pub kind: FlowEventKind,
     /// The frame worked on, 0-based.
     pub frame: usize,
@@ -54,10 +55,12 @@ pub struct FlowEvent {
     pub flow_energy: f64,
     /// Matches that changed in this iteration's M-step.
     pub changed: usize,
+    /// Whole iterations so far over all frames, frame 0's levels included (parts not counted).
     pub total_iterations: usize,
     /// With [`FlowEventKind::Part`]: the phase the step stopped in and the share (0 to 1) of
     /// the iteration's work done; a whole iteration reports its last phase and 1.
     pub phase: Phase,
+    /// Share of the iteration's work done, 0 to 1 (1 for a whole iteration).
     pub progress: f64,
 }
 
@@ -206,7 +209,7 @@ impl FlowSession {
     }
 
     /// The estimated working set: the larger of frame 0's synthesis and the later frames'
-    /// (see [`super::memory`]).
+    /// (see `super::memory`).
     #[must_use]
     pub fn working_set(&self) -> crate::core::budget::WorkingSet {
         let fields = match &self.flow {
@@ -235,11 +238,13 @@ impl FlowSession {
         }
     }
 
+    /// The options the animation was built with.
     #[must_use]
     pub fn options(&self) -> &FlowOptions {
         &self.options
     }
 
+    /// Whether every frame is finished.
     #[must_use]
     pub fn is_done(&self) -> bool {
         self.frame >= self.options.frames
@@ -289,7 +294,7 @@ impl FlowSession {
 
     /// Sets whether iterations split over steps and how long such a step works (None: whole
     /// iterations; the default splits frames larger than
-    /// [`SPLIT_PIXELS`](optimization::iteration::SPLIT_PIXELS)), and the work between looks at
+    /// `SPLIT_PIXELS`), and the work between looks at
     /// the clock, for frame 0's synthesis too. Where iterations split changes no output.
     pub fn set_step_budget(&mut self, milliseconds: Option<f64>, chunk_work: usize) {
         // The step anatomy's halves are a separate switch: a new budget keeps it.

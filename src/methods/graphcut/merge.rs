@@ -121,11 +121,13 @@ impl Merge {
         })
     }
 
+    /// The sources and the canvas (composite, labels, seams) of the merge so far.
     #[must_use]
     pub fn synthesis(&self) -> &Synthesis {
         &self.synthesis
     }
 
+    /// Whether every source is down.
     #[must_use]
     pub fn is_done(&self) -> bool {
         self.next >= self.offsets.len()

@@ -18,6 +18,7 @@ pub enum Placement {
 }
 
 impl Placement {
+    /// The name used in options ("random", "entire-patch", "sub-patch").
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
@@ -27,6 +28,7 @@ impl Placement {
         }
     }
 
+    /// The placement of that name (see [`Placement::name`]); `None` for an unknown one.
     #[must_use]
     pub fn from_name(name: &str) -> Option<Placement> {
         [
@@ -52,6 +54,7 @@ pub enum Blend {
 }
 
 impl Blend {
+    /// The name used in options ("none", "feather", "spline").
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
@@ -61,6 +64,7 @@ impl Blend {
         }
     }
 
+    /// The blending of that name (see [`Blend::name`]); `None` for an unknown one.
     #[must_use]
     pub fn from_name(name: &str) -> Option<Blend> {
         [Blend::None, Blend::Feather, Blend::Spline]
@@ -110,7 +114,7 @@ pub struct Options {
     pub transforms: Transforms,
     /// Periodic output: costs and overlaps wrap around, so the result tiles. Default: false.
     pub tileable: bool,
-    /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses an
+    /// The memory budget in MiB (see `crate::core::budget`): the constructor refuses an
     /// output whose working set would exceed it. Default: 1024.
     pub memory_budget_mib: usize,
 }

@@ -21,10 +21,15 @@ pub struct Event {
     pub rect: (i64, i64, usize, usize),
     /// The error region it had to cover.
     pub region: Region,
+    /// Output pixels the new patch took (0 when none was placed).
     pub pixels_taken: usize,
+    /// Cost of this placement's min cut (0 when no patch was placed).
     pub cut_cost: f64,
+    /// Whether every output pixel has been covered.
     pub covered: bool,
+    /// Cost of all seams in the output.
     pub total_seam_cost: f64,
+    /// Patches placed so far, this step's included.
     pub patches_placed: usize,
 }
 
@@ -54,6 +59,7 @@ pub struct Session {
 }
 
 impl Session {
+    /// A session over `exemplar`; fails on a bad option or an output beyond the memory budget.
     pub fn new(exemplar: &Image, options: Options) -> Result<Session> {
         Ok(Session {
             synthesis: Synthesis::new(exemplar, options)?,
@@ -78,6 +84,7 @@ impl Session {
         }
     }
 
+    /// The sources and the canvas (output, labels, seams) of the synthesis so far.
     #[must_use]
     pub fn synthesis(&self) -> &Synthesis {
         &self.synthesis
@@ -88,6 +95,7 @@ impl Session {
         &mut self.synthesis
     }
 
+    /// Whether the session has ended: the output covered and refined, or no offset left.
     #[must_use]
     pub fn is_done(&self) -> bool {
         self.finished

@@ -30,7 +30,7 @@ pub enum Start {
     /// A graph-cut synthesis (sub-patch placement) at the coarsest level's size.
     #[default]
     Graphcut,
-    /// Random exemplar windows laid edge to edge, a neighbourhood wide ([`random_patches`]).
+    /// Random exemplar windows laid edge to edge, a neighbourhood wide (`random_patches`).
     Patches,
 }
 
@@ -44,6 +44,7 @@ impl Start {
         }
     }
 
+    /// The start of that name (see [`Start::name`]); `None` for an unknown one.
     #[must_use]
     pub fn from_name(name: &str) -> Option<Start> {
         [Start::Graphcut, Start::Patches]

@@ -35,7 +35,7 @@ pub struct Options {
     pub mu: f32,
     /// Weight of the gradient term in the M-step's distance alone (not in the paper, whose EM
     /// minimises one energy in both steps: `Some(mu)` is that). Default `None`: `mu` up to 1,
-    /// [`DEFAULT_M_STEP_MU`] above. At the paper's mu = 10 a search with the same weight
+    /// `DEFAULT_M_STEP_MU` above. At the paper's mu = 10 a search with the same weight
     /// matches by gradient almost alone (each of a pixel's six gradient values weighs ten times
     /// each of its three colour values), so neighbouring matches agree on edges and not on
     /// colour, and the output drifts into colour blotches (carpet_64) or crack-free washes
@@ -49,30 +49,30 @@ pub struct Options {
     /// Periodic output: neighbourhoods wrap around the borders, so the result tiles. Default: false.
     pub tileable: bool,
     /// Weight of the occurrence penalty that makes the output use all of the exemplar (see
-    /// [`super::occurrence`]; not in the paper); 0 is the paper's M-step. Default: 1.
+    /// `super::occurrence`; not in the paper); 0 is the paper's M-step. Default: 1.
     pub completeness: f32,
     /// How far each E-step's output is moved to the exemplar's colour histogram, per channel
-    /// (see [`super::histogram`]; not in the paper): 0 is the paper's E-step, 1 matches the
+    /// (see `super::histogram`; not in the paper): 0 is the paper's E-step, 1 matches the
     /// histograms exactly. Without it, averaging neighbourhoods that do not line up washes
     /// out contrast, and EM settles on the exemplar's smooth areas (flat fraction up to 0.95
     /// on paving_128, 0.08-0.17 with it). Default: 1.
     pub histogram_matching: f32,
     /// What the M-step's distance is made of: `pixels` (Kwatra et al. 2005), or the
     /// wavelet-based energy of Shen et al. 2009 (eq. 4) with `haar` or `daubechies` (D4)
-    /// coefficients of each neighbourhood (see [`super::wavelet_energy`]). The wavelet energies
+    /// coefficients of each neighbourhood (see `super::wavelet_energy`). The wavelet energies
     /// need power-of-two neighbourhood sizes of at least 4, and do not take soft constraints.
     /// Default: pixels.
     pub energy: Energy,
     /// Weight w of the wavelet detail bands in eq. 4 (the approximation band has 1). Both
     /// transforms are orthonormal, so w = 1 is eq. 4 taken literally, which only doubles the
     /// pixel distance (Parseval) and changes no match; w > 1 stresses multi-scale edges over
-    /// mean colour. Ignored with the pixel energy. Default: [`DEFAULT_DETAIL_WEIGHT`].
+    /// mean colour. Ignored with the pixel energy. Default: `DEFAULT_DETAIL_WEIGHT`.
     pub wavelet_detail_weight: f32,
-    /// How the coarsest level starts (see [`super::initial`]; the paper starts at random): a
+    /// How the coarsest level starts (see `super::initial`; the paper starts at random): a
     /// graph-cut synthesis, which keeps lattices and large elements whole, or random exemplar
     /// patches. Default: graph cut.
     pub start: Start,
-    /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses an
+    /// The memory budget in MiB (see `crate::core::budget`): the constructor refuses an
     /// output whose working set would exceed it. Default: 1024.
     pub memory_budget_mib: usize,
 }
@@ -118,7 +118,7 @@ pub const MAX_ITERATIONS: usize = 100;
 
 impl Options {
     /// The gradient weight of the M-step's distance: `m_step_mu` where set, else `mu` up to
-    /// [`DEFAULT_M_STEP_MU`].
+    /// `DEFAULT_M_STEP_MU`.
     #[must_use]
     pub fn search_mu(&self) -> f32 {
         self.m_step_mu.unwrap_or(self.mu.min(DEFAULT_M_STEP_MU))

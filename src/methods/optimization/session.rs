@@ -22,7 +22,7 @@ use crate::solvers::nn::Pos;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum EventKind {
     /// Part of an iteration: on large outputs an iteration is split over several steps (see
-    /// [`SPLIT_PIXELS`](super::iteration::SPLIT_PIXELS)); the event names the phase and the share of the iteration done.
+    /// `SPLIT_PIXELS`); the event names the phase and the share of the iteration done.
     Part,
     /// The first iteration of a new level (resolution or neighbourhood size changed).
     Level,
@@ -35,12 +35,15 @@ pub enum EventKind {
 /// The report of one step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Event {
+    /// What the step did; [`EventKind::Done`] on the last step and any after it.
     pub kind: EventKind,
     /// Index of the synthesis level in the schedule, 0-based.
     pub level: usize,
+    /// Levels in the schedule.
     pub level_count: usize,
     /// Resolution index: 0 is full resolution, k is down-sampled k times (1/2^k).
     pub octave: usize,
+    /// Neighbourhood width w of the level, in pixels.
     pub size: usize,
     /// Iteration within the level, 1-based.
     pub iteration: usize,
@@ -56,11 +59,12 @@ pub struct Event {
     /// Total EM iterations so far.
     pub total_iterations: usize,
     /// Conjugate-gradient iterations of this step's gradient-energy solve (0 when mu = 0); it
-    /// stops at a relative residual of [`CG_TOLERANCE`](super::e_step::CG_TOLERANCE).
+    /// stops at a relative residual of `CG_TOLERANCE`.
     pub solver_iterations: usize,
     /// With [`EventKind::Part`]: the phase the step stopped in and the share (0 to 1) of the
     /// iteration's work done; a whole iteration reports its last phase and 1.
     pub phase: Phase,
+    /// Share of the iteration's work done, 0 to 1 (1 for a whole iteration).
     pub progress: f64,
 }
 
@@ -218,8 +222,8 @@ impl Session {
     }
 
     /// Sets whether iterations split over steps and how long such a step works (None: whole
-    /// iterations; see [`SPLIT_PIXELS`](super::iteration::SPLIT_PIXELS) for the default), and the work between looks at the
-    /// clock (see [`CHUNK_WORK`](super::iteration::CHUNK_WORK)). Where iterations split
+    /// iterations; see `SPLIT_PIXELS` for the default), and the work between looks at the
+    /// clock (see `CHUNK_WORK`). Where iterations split
     /// changes no output.
     pub fn set_step_budget(&mut self, milliseconds: Option<f64>, chunk_work: usize) {
         self.budget = StepBudget {
@@ -228,7 +232,7 @@ impl Session {
         };
     }
 
-    /// The estimated working set (see [`super::memory`]), with or without soft constraints.
+    /// The estimated working set (see `super::memory`), with or without soft constraints.
     #[must_use]
     pub fn working_set(&self, constraints: bool) -> crate::core::budget::WorkingSet {
         let e = &self.exemplars[0];
@@ -250,6 +254,7 @@ impl Session {
         self.exemplars[0].channels()
     }
 
+    /// The soft constraints at full output resolution, as given (None when there are none).
     #[must_use]
     pub fn constraints(&self) -> Option<&SoftConstraints> {
         self.constraints.as_ref()
@@ -262,21 +267,25 @@ impl Session {
         Some(c.at_size(lv.output_width, lv.output_height))
     }
 
+    /// The options the session was built with.
     #[must_use]
     pub fn options(&self) -> &Options {
         &self.options
     }
 
+    /// The levels of the schedule, coarsest first.
     #[must_use]
     pub fn schedule(&self) -> &[Level] {
         &self.levels
     }
 
+    /// Whether every level of the schedule is finished.
     #[must_use]
     pub fn is_done(&self) -> bool {
         self.level >= self.levels.len()
     }
 
+    /// The texture energy of every whole iteration so far, with its level, in order.
     #[must_use]
     pub fn history(&self) -> &[EnergyPoint] {
         &self.history
@@ -337,7 +346,7 @@ impl Session {
     }
 
     /// Runs one EM iteration and reports it; on a large output, part of one (see
-    /// [`SPLIT_PIXELS`](super::iteration::SPLIT_PIXELS); the event's kind is then [`EventKind::Part`]).
+    /// `SPLIT_PIXELS`; the event's kind is then [`EventKind::Part`]).
     pub fn step(&mut self) -> Result<Event> {
         if self.is_done() {
             let mut last = self.last.expect("a finished session has stepped");

@@ -50,6 +50,7 @@ impl Energy {
         }
     }
 
+    /// The energy of that name (see [`Energy::name`]); `None` for an unknown one.
     #[must_use]
     pub fn from_name(name: &str) -> Option<Energy> {
         [Energy::Pixels, Energy::Haar, Energy::Daubechies]

@@ -31,10 +31,14 @@ const BINS: usize = 256;
 /// The four metrics of one output against its exemplar.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Quality {
+    /// Mean distance of the output's 7x7 patches to their nearest exemplar patches (per-value
+    /// squared error on 0..1 RGB): does every part of the output look like the exemplar?
     pub coherence: f64,
+    /// The same from the exemplar's patches to the output's: does the output use all of it?
     pub completeness: f64,
+    /// Earth mover's distance between the colour histograms, averaged over R, G, B (0: same).
     pub histogram: f64,
-    /// Share of flat output pixels (see [`detail`]); about 0.10 for the exemplar itself.
+    /// Share of flat output pixels (see `detail`); about 0.10 for the exemplar itself.
     pub flat: f64,
 }
 

@@ -19,6 +19,7 @@ pub enum Mode {
 }
 
 impl Mode {
+    /// The mode of a name used in options ("loop", "offsets", "extend"); `None` for another.
     #[must_use]
     pub fn from_name(name: &str) -> Option<Mode> {
         match name {
@@ -42,6 +43,7 @@ pub enum Placement {
 }
 
 impl Placement {
+    /// The placement of a name used in options ("random", "matching"); `None` for another.
     #[must_use]
     pub fn from_name(name: &str) -> Option<Placement> {
         match name {
@@ -56,9 +58,14 @@ impl Placement {
 /// the input's for `Extend`; `Loop` chooses its own length).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Options {
+    /// Which synthesis to run. Default: [`Mode::Loop`].
     pub mode: Mode,
+    /// Frame width in pixels; only [`Mode::Extend`] may differ from the input's.
     pub output_width: Option<usize>,
+    /// Frame height in pixels; only [`Mode::Extend`] may differ from the input's.
     pub output_height: Option<usize>,
+    /// Output frames, without 7.D's removed first k; refused for [`Mode::Loop`], which chooses
+    /// its own length.
     pub output_frames: Option<usize>,
     /// k of 7.D: the first and last k frames fixed while synthesising, then the first k removed.
     /// Default: 10 ("k = 10 in our implementation"). 0 turns the constraint off (no loop).
@@ -66,7 +73,9 @@ pub struct Options {
     /// The most frames of the seam window around the transition of 7.A. Default: 60 (the
     /// paper's "60-frame spatio-temporal window"); shorter clips get a shorter window.
     pub transition_window: usize,
+    /// How offsets are chosen in [`Mode::Offsets`] and [`Mode::Extend`]. Default: random.
     pub placement: Placement,
+    /// Seed of every random choice (offsets, eq. 3's draws). Default: 1.
     pub seed: u64,
     /// k of eq. 3 for matching placement. Default: 0.01, as in the image version.
     pub k: f32,
@@ -75,7 +84,7 @@ pub struct Options {
     pub refinement_patches: usize,
     /// M' (eq. 5) instead of M. Default: false.
     pub gradient_cost: bool,
-    /// The memory budget in MiB (see [`crate::core::budget`]): the constructor refuses a video
+    /// The memory budget in MiB (see `crate::core::budget`): the constructor refuses a video
     /// whose working set would exceed it. Default: 1024.
     pub memory_budget_mib: usize,
 }

@@ -37,7 +37,9 @@ pub struct Event {
     pub patches: usize,
     /// The patch's offset in the output (output frames, after the removal of 7.D's first k).
     pub offset: (i32, i32, i32),
+    /// Output voxels (pixels of all frames) the new patch took; 0 when none was placed.
     pub voxels_taken: usize,
+    /// Cost of this placement's min cut (0 when no patch was placed).
     pub cut_cost: f64,
     /// Every output voxel covered.
     pub covered: bool,
@@ -170,6 +172,8 @@ impl Session {
         }
     }
 
+    /// The sources and the canvas (voxels, labels, seams) so far, in canvas frames (see
+    /// [`Session::frame_origin`]).
     #[must_use]
     pub fn synthesis(&self) -> &Synthesis {
         &self.synthesis
@@ -181,16 +185,19 @@ impl Session {
         self.working_set
     }
 
+    /// The options the session was built with.
     #[must_use]
     pub fn options(&self) -> &Options {
         &self.options
     }
 
+    /// The input clip.
     #[must_use]
     pub fn clip(&self) -> &Volume {
         &self.clip
     }
 
+    /// Whether the session has nothing left to do.
     #[must_use]
     pub fn is_done(&self) -> bool {
         self.phase == Phase::Done
@@ -243,7 +250,7 @@ impl Session {
     }
 
     /// Records (or stops recording) each placement's cost slice and graph slice for the page's
-    /// placement anatomy (see [`super::anatomy`]); off by default.
+    /// placement anatomy (see `super::anatomy`); off by default.
     pub fn set_anatomy(&mut self, on: bool) {
         self.synthesis.record_anatomy = on;
         if !on {

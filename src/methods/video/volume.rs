@@ -76,26 +76,31 @@ impl Volume {
         Ok(v)
     }
 
+    /// Frame width in pixels.
     #[must_use]
     pub fn width(&self) -> usize {
         self.width
     }
 
+    /// Frame height in pixels.
     #[must_use]
     pub fn height(&self) -> usize {
         self.height
     }
 
+    /// Number of frames.
     #[must_use]
     pub fn frames(&self) -> usize {
         self.frames
     }
 
+    /// Number of voxels, `width * height * frames`.
     #[must_use]
     pub fn voxel_count(&self) -> usize {
         self.width * self.height * self.frames
     }
 
+    /// The RGB values, interleaved, row by row and frame after frame.
     #[must_use]
     pub fn data(&self) -> &[f32] {
         &self.data
@@ -115,6 +120,7 @@ impl Volume {
         &self.data[i * CHANNELS..(i + 1) * CHANNELS]
     }
 
+    /// Colour of voxel `i`, for writing.
     #[inline]
     pub fn voxel_mut(&mut self, i: usize) -> &mut [f32] {
         &mut self.data[i * CHANNELS..(i + 1) * CHANNELS]

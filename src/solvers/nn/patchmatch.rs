@@ -294,7 +294,7 @@ mod tests {
         passes: usize,
         rng: &mut Rng,
     ) -> usize {
-        let mut stored = Stored {
+        let stored = Stored {
             values: queries,
             weights: None,
             len,
@@ -302,7 +302,7 @@ mod tests {
         let objective = Objective::default();
         improve(
             space,
-            &mut stored,
+            &stored,
             &objective,
             grid,
             matches,

@@ -32,7 +32,9 @@ pub enum LayerPlacement {
 /// One layer: a designed texture and the global deformations applied to it first.
 #[derive(Debug, Clone)]
 pub struct Layer {
+    /// The designed texture: the sample, a deformed or a locally deformed one.
     pub texture: Image,
+    /// Global deformations applied to `texture` in order before the search (empty: none).
     pub deformations: Vec<Deformation>,
 }
 
@@ -41,6 +43,7 @@ pub struct Layer {
 pub struct LayerOptions {
     /// Output size. Default: 360x360 (the paper's).
     pub output_width: usize,
+    /// Output height in pixels. Default: 360.
     pub output_height: usize,
     /// Patch side. Default: 32 (the paper uses 32 to 92, Table 2).
     pub patch_size: usize,
@@ -56,8 +59,10 @@ pub struct LayerOptions {
     pub placement: LayerPlacement,
     /// Candidates within (1 + tolerance) of the best SSD are acceptable. Default: 0.3.
     pub tolerance: f32,
+    /// Seed of every random choice (the logistic map, random placement, search windows).
+    /// Default: 1.
     pub seed: u64,
-    /// The memory budget in MiB (see [`crate::core::budget`]): an output whose working set
+    /// The memory budget in MiB (see `crate::core::budget`): an output whose working set
     /// would exceed it is refused. Default: 1024.
     pub memory_budget_mib: usize,
 }
@@ -134,8 +139,11 @@ impl LayerOptions {
 pub struct LayerEvent {
     /// The row of patches made (0-based) and how many rows there are.
     pub row: usize,
+    /// Rows of patches in the output.
     pub rows: usize,
+    /// Patches placed so far, this row's included.
     pub patches: usize,
+    /// Patches the whole output takes.
     pub total_patches: usize,
     /// Sum over this row's patches of the chosen patch's boundary-zone SSD.
     pub ssd: f64,
@@ -146,8 +154,9 @@ pub struct LayerEvent {
     /// Pixel differences those searches computed: the work done.
     pub pixels_compared: usize,
     /// The most candidate positions one patch's search computed so far: bounded by the search
-    /// window for layers larger than [`MAX_LAYER_SIDE`] a side (see `window.rs`).
+    /// window for layers larger than `MAX_LAYER_SIDE` a side (see `window.rs`).
     pub largest_search: usize,
+    /// True on the last step, and on any step after it (which repeats the last event).
     pub done: bool,
 }
 
@@ -273,16 +282,19 @@ impl LayerDesign {
         })
     }
 
+    /// The output as far as it is made (black where no patch has been placed yet).
     #[must_use]
     pub fn image(&self) -> &Image {
         &self.output
     }
 
+    /// Whether every row of patches has been made.
     #[must_use]
     pub fn is_done(&self) -> bool {
         self.row >= self.ys.len()
     }
 
+    /// The options the design was built with.
     #[must_use]
     pub fn options(&self) -> &LayerOptions {
         &self.options
