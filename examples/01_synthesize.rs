@@ -34,7 +34,10 @@ fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
     let mut session = optimization::Session::new(&exemplar, options)?;
     while !session.is_done() {
         let event = session.step()?;
-        println!("optimization: {:?} level {} energy {:.4}", event.kind, event.level, event.energy);
+        println!(
+            "optimization: {:?} level {} energy {:.4}",
+            event.kind, event.level, event.energy
+        );
     }
     args::save(&folder, "optimization.png", &Session::output(&session)?)?;
 
@@ -46,6 +49,10 @@ fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
         seed: 1,
         ..Default::default()
     };
-    args::save(&folder, "graphcut.png", &run(graphcut::Session::new(&exemplar, options)?)?)?;
+    args::save(
+        &folder,
+        "graphcut.png",
+        &run(graphcut::Session::new(&exemplar, options)?)?,
+    )?;
     Ok(())
 }

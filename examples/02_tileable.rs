@@ -10,8 +10,8 @@
 #[path = "shared/args.rs"]
 mod args;
 
-use texsynth::design::tileable;
 use texsynth::Image;
+use texsynth::design::tileable;
 
 fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
     let (exemplar, folder) = args::exemplar_and_folder("02_tileable")?;
@@ -20,7 +20,9 @@ fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
         let event = session.step()?;
         println!("stitch: {event:?}");
     }
-    let result = session.result().ok_or("the session finished without a result")?;
+    let result = session
+        .result()
+        .ok_or("the session finished without a result")?;
     println!(
         "cut open at column {} and row {}; seam costs {:.3} and {:.3}",
         result.cut_x, result.cut_y, result.seam_cost_x, result.seam_cost_y

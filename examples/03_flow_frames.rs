@@ -30,8 +30,17 @@ fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
         let event = session.step()?;
         // A frame is finished on its last iteration: render it then to keep it.
         if matches!(event.kind, flow::EventKind::Frame | flow::EventKind::Done) {
-            println!("frame {}: texture energy {:.4}, flow energy {:.4}", event.frame + 1, event.texture_energy, event.flow_energy);
-            args::save(&folder, &format!("frame{:02}.png", event.frame + 1), &Session::output(&session)?)?;
+            println!(
+                "frame {}: texture energy {:.4}, flow energy {:.4}",
+                event.frame + 1,
+                event.texture_energy,
+                event.flow_energy
+            );
+            args::save(
+                &folder,
+                &format!("frame{:02}.png", event.frame + 1),
+                &Session::output(&session)?,
+            )?;
         }
     }
     Ok(())

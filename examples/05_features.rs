@@ -18,9 +18,17 @@ fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
     // Ridges and valleys above the 90th percentile of the detector's response, followed down to
     // alpha times that threshold where they continue a curve.
     let map = features::detect(&exemplar, features::DetectOptions::default())?;
-    println!("{} feature pixels of {}", map.count(), map.width * map.height);
+    println!(
+        "{} feature pixels of {}",
+        map.count(),
+        map.width * map.height
+    );
     let shown = Image::from_fn(map.width, map.height, 1, |x, y, _| {
-        if map.mask[y * map.width + x] { 1.0 } else { 0.0 }
+        if map.mask[y * map.width + x] {
+            1.0
+        } else {
+            0.0
+        }
     })?;
     args::save(&folder, "features.png", &shown)?;
 
@@ -36,7 +44,12 @@ fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
         let event = session.step()?;
         println!(
             "patch {}/{} from ({}, {}): feature cost {:.3}, colour cost {:.4}",
-            event.patch + 1, event.patches, event.source_x, event.source_y, event.feature_cost, event.colour_cost
+            event.patch + 1,
+            event.patches,
+            event.source_x,
+            event.source_y,
+            event.feature_cost,
+            event.colour_cost
         );
     }
     args::save(&folder, "synthesis.png", &Session::output(&session)?)?;

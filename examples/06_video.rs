@@ -14,9 +14,10 @@ use std::path::{Path, PathBuf};
 use texsynth::{Image, video};
 
 fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
-    let folder = std::env::args()
-        .nth(1)
-        .map_or_else(|| Path::new("target/examples/06_video").to_path_buf(), PathBuf::from);
+    let folder = std::env::args().nth(1).map_or_else(
+        || Path::new("target/examples/06_video").to_path_buf(),
+        PathBuf::from,
+    );
     std::fs::create_dir_all(&folder)?;
     // A clip is a volume of RGB voxels in 0..1; `Volume::from_rgba_frames` takes decoded frames.
     let clip = video::Volume::from_fn(48, 48, 40, |x, y, t| {
@@ -25,7 +26,13 @@ fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
         let v = 0.5 + 0.4 * wave;
         [0.2 * v, 0.4 + 0.3 * v, 0.6 + 0.4 * v]
     })?;
-    let mut session = video::Session::new(clip, video::Options { mode: video::Mode::Loop, ..Default::default() })?;
+    let mut session = video::Session::new(
+        clip,
+        video::Options {
+            mode: video::Mode::Loop,
+            ..Default::default()
+        },
+    )?;
     while !session.is_done() {
         let event = session.step()?;
         println!("{event:?}");
@@ -34,7 +41,10 @@ fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
     for t in 0..frames {
         let rgb = session.frame(t);
         let frame = Image::from_fn(w, h, 3, |x, y, c| rgb[(y * w + x) * 3 + c])?;
-        std::fs::write(folder.join(format!("loop{:02}.png", t + 1)), texsynth::encode_png(&frame)?)?;
+        std::fs::write(
+            folder.join(format!("loop{:02}.png", t + 1)),
+            texsynth::encode_png(&frame)?,
+        )?;
     }
     println!("{frames} frames of {w}x{h} in {}", folder.display());
     Ok(())

@@ -41,16 +41,16 @@
 #![warn(missing_docs)]
 
 /// Declares an internal layer: private to the crate, and public (hidden from the docs) with the
-/// `internals` feature, which only the project's benchmarks and fuzz targets turn on. Much of
-/// the layers serves the JS bindings alone, so dead code is linted in the wasm build, where the
-/// bindings call it, and not in the native one.
+/// `internals` feature, which only the project's benchmarks and fuzz targets turn on. Parts of
+/// the layers serve only the JS bindings, the tests' oracles or the benchmarks, so dead code is
+/// not linted when the layers are private.
 macro_rules! layer {
     ($name:ident) => {
         #[cfg(feature = "internals")]
         #[doc(hidden)]
         pub mod $name;
         #[cfg(not(feature = "internals"))]
-        #[cfg_attr(not(target_arch = "wasm32"), allow(dead_code, unused_imports))]
+        #[allow(dead_code, unused_imports)]
         mod $name;
     };
 }

@@ -54,10 +54,12 @@ fn code_of(text: &str) -> BTreeMap<Vec<String>, String> {
         }
         let words: Vec<&str> = trimmed.split_whitespace().collect();
         if let Some(i) = words.iter().position(|w| *w == "mod")
-            && words.get(i + 2) == Some(&"{") && opens > closes {
-                inline.push((words[i + 1].to_string(), before));
-                continue;
-            }
+            && words.get(i + 2) == Some(&"{")
+            && opens > closes
+        {
+            inline.push((words[i + 1].to_string(), before));
+            continue;
+        }
         while inline.last().is_some_and(|&(_, d)| depth <= d) {
             inline.pop();
         }
@@ -182,12 +184,12 @@ impl Crate {
             path.get(module.len()),
             self.reexports.get(module),
             depth < 16,
-        )
-            && let Some(target) = map.get(name) {
-                let mut target = target.clone()?;
-                target.extend(path[module.len() + 1..].iter().cloned());
-                return self.resolve(&target, depth + 1);
-            }
+        ) && let Some(target) = map.get(name)
+        {
+            let mut target = target.clone()?;
+            target.extend(path[module.len() + 1..].iter().cloned());
+            return self.resolve(&target, depth + 1);
+        }
         self.files.get(module).cloned()
     }
 }
@@ -278,9 +280,10 @@ fn graph(sources: &[(String, String)]) -> BTreeMap<String, BTreeSet<String>> {
                 if boundary {
                     let path = tail[..len].trim_end_matches(':');
                     if let Some(abs) = krate.absolute(module, path)
-                        && let Some(target) = krate.resolve(&abs, 0) {
-                            targets.insert(target);
-                        }
+                        && let Some(target) = krate.resolve(&abs, 0)
+                    {
+                        targets.insert(target);
+                    }
                 }
                 rest = &tail[len.max(1)..];
             }

@@ -7,9 +7,13 @@ use std::path::{Path, PathBuf};
 
 /// The first argument (default: the 64x64 tiles sample) decoded, and the folder of the second
 /// (default: `target/examples/NAME`), created.
-pub fn exemplar_and_folder(name: &str) -> Result<(texsynth::Image, PathBuf), Box<dyn std::error::Error>> {
+pub fn exemplar_and_folder(
+    name: &str,
+) -> Result<(texsynth::Image, PathBuf), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
-    let input = args.get(1).map_or("www/samples/tiles_64.png", String::as_str);
+    let input = args
+        .get(1)
+        .map_or("www/samples/tiles_64.png", String::as_str);
     let folder = args
         .get(2)
         .map_or_else(|| Path::new("target/examples").join(name), PathBuf::from);
@@ -19,8 +23,17 @@ pub fn exemplar_and_folder(name: &str) -> Result<(texsynth::Image, PathBuf), Box
 }
 
 /// Writes `image` as `folder/file` and says so.
-pub fn save(folder: &Path, file: &str, image: &texsynth::Image) -> Result<(), Box<dyn std::error::Error>> {
+pub fn save(
+    folder: &Path,
+    file: &str,
+    image: &texsynth::Image,
+) -> Result<(), Box<dyn std::error::Error>> {
     std::fs::write(folder.join(file), texsynth::encode_png(image)?)?;
-    println!("{}: {}x{}", folder.join(file).display(), image.width(), image.height());
+    println!(
+        "{}: {}x{}",
+        folder.join(file).display(),
+        image.width(),
+        image.height()
+    );
     Ok(())
 }

@@ -3,8 +3,6 @@
 //! `runPoolThread()`, then `activateThreadPool()` once all have started. The single-threaded
 //! module has the same `threaded()` and `threadCount()`, so code can ask either build.
 
-use super::error::JsResult;
-use wasm_bindgen::JsError;
 use wasm_bindgen::prelude::*;
 
 /// Whether this module was built with threads (shared memory and a rayon pool).
@@ -23,8 +21,10 @@ pub fn thread_count() -> usize {
 
 #[cfg(feature = "parallel")]
 mod pool {
+    use super::super::error::JsResult;
     use super::*;
     use crate::core::parallel::pool;
+    use wasm_bindgen::JsError;
 
     /// The largest pool the package starts.
     const MAX_THREADS: usize = 64;

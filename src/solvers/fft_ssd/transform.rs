@@ -13,6 +13,11 @@ const BLOCK: usize = 8;
 /// thread count.
 const PIECE: usize = 8;
 
+/// Transforms of fewer values than this run on the calling thread: graph cut's windows (about
+/// 200 a side) are transformed hundreds of times, and handing their few pieces to other threads
+/// costs more than it saves. The split does not change a bit of the result.
+const PARALLEL_VALUES: usize = 1 << 19;
+
 /// The spectrum is row-major, `spectrum[(z * ny + y) * (nx / 2 + 1) + kx]`; products of spectra
 /// do not care about the layout.
 pub(super) struct Transform {
@@ -71,6 +76,11 @@ impl Transform {
     /// `field` (row-major, `nx * ny`) to its unnormalised spectrum.
     pub(super) fn forward(&mut self, field: &[f64], spectrum: &mut [Complex<f64>]) {
         let width = self.rows.spectrum_len();
+        if !self.parallel() {
+            for (rows_in, out) in field.chunks(self.nx * BLOCK).zip(spectrum.chunks_mut(width * BLOCK)) {
+                self.rows.forward_batch(rows_in, out, &mut self.scratch);
+            }
+        } else {
         let (nx, rows, scratch_len) = (self.nx, &self.rows, self.scratch.len());
         parallel::for_each_piece_mut(spectrum, width * BLOCK * PIECE, |piece, out| {
             let mut scratch = vec![Complex::default(); scratch_len];
@@ -79,6 +89,7 @@ impl Transform {
                 rows.forward_batch(rows_in, out, &mut scratch);
             }
         });
+        }
         let slice = width * self.ny;
         for frame in spectrum.chunks_exact_mut(slice) {
             self.columns(frame, Direction::Forward);
@@ -93,6 +104,12 @@ impl Transform {
         for frame in spectrum.chunks_exact_mut(width * self.ny) {
             self.columns(frame, Direction::Inverse);
         }
+        if !self.parallel() {
+            for (rows_in, out) in spectrum.chunks(width * BLOCK).zip(field.chunks_mut(self.nx * BLOCK)) {
+                self.rows.inverse_batch(rows_in, out, &mut self.scratch);
+            }
+            return;
+        }
         let spectrum = &*spectrum;
         let (nx, rows, scratch_len) = (self.nx, &self.rows, self.scratch.len());
         parallel::for_each_piece_mut(field, nx * BLOCK * PIECE, |piece, out| {
@@ -102,6 +119,11 @@ impl Transform {
                 rows.inverse_batch(rows_in, out, &mut scratch);
             }
         });
+    }
+
+    /// Whether the passes hand their pieces to other threads.
+    fn parallel(&self) -> bool {
+        self.nx * self.ny * self.nz >= PARALLEL_VALUES
     }
 
     /// Transforms along the third axis: the same (y, kx) of every frame is one sequence. Frames are
@@ -144,6 +166,20 @@ impl Transform {
             Direction::Inverse => &self.columns_inverse,
         };
         let (ny, scratch_len) = (self.ny, self.scratch.len());
+        if !self.parallel() {
+            for first in (0..width).step_by(BLOCK) {
+                let count = BLOCK.min(width - first);
+                let block = &mut self.block[..ny * count];
+                for (to, row) in block.chunks_exact_mut(count).zip(spectrum.chunks_exact(width)) {
+                    to.copy_from_slice(&row[first..first + count]);
+                }
+                plan.process_batch(block, &mut self.scratch, count);
+                for (from, row) in block.chunks_exact(count).zip(spectrum.chunks_exact_mut(width)) {
+                    row[first..first + count].copy_from_slice(from);
+                }
+            }
+            return;
+        }
         let firsts: Vec<usize> = (0..width).step_by(BLOCK).collect();
         for group in firsts.chunks(PIECE) {
             // Each block of columns is gathered and transformed on its own; the blocks are then
