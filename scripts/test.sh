@@ -25,7 +25,7 @@ stage() { # name, command...
 stage native cargo test --tests --lib
 # The crate's documentation builds without a warning, its examples and the README's Rust quick
 # start run as doc tests, and every numbered example in examples/ runs on its defaults.
-stage doc bash -c 'RUSTDOCFLAGS="-D warnings" cargo doc --no-deps -p texsynth && cargo test --doc -p texsynth &&
+stage doc bash -c 'RUSTDOCFLAGS="-D warnings" cargo doc --no-deps -p texsynth && cargo test --doc -p texsynth --features internals &&
   for e in examples/[0-9]*.rs; do cargo run -q --example "$(basename "$e" .rs)" >/dev/null || { echo "example $e failed"; exit 1; }; done && echo "examples: all ran"'
 # The package, and the static page the browser tests open (site/, served as any static host would).
 stage build bash -c './scripts/build.sh && ./scripts/build-site.sh'
