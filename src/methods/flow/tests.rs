@@ -39,72 +39,6 @@ fn animate(
     }
 }
 
-#[test]
-#[ignore = "exploration: prints coherence along a vortex animation"]
-fn coherence_along_a_vortex() {
-    let exemplar = sample(&std::env::var("FLOW_SAMPLE").unwrap_or("tiles_64".into()));
-    let env = |k: &str, d: f32| {
-        std::env::var(k)
-            .ok()
-            .and_then(|v| v.parse().ok())
-            .unwrap_or(d)
-    };
-    let opts = FlowOptions {
-        lambda: env("FLOW_LAMBDA", FlowOptions::default().lambda),
-        frame_iterations: env("FLOW_ITERS", FlowOptions::default().frame_iterations as f32)
-            as usize,
-        frame_sizes: std::env::var("FLOW_SIZES").map_or(FlowOptions::default().frame_sizes, |s| {
-            s.split(',').map(|v| v.parse().unwrap()).collect()
-        }),
-        output_width: env("FLOW_SIZE", 64.0) as usize,
-        output_height: env("FLOW_SIZE", 64.0) as usize,
-        ..options(env("FLOW_FRAMES", 50.0) as usize)
-    };
-    let (frames, naive, events) = animate(&exemplar, vortex(env("FLOW_STRENGTH", 2.0)), opts);
-    let flow: f64 = events
-        .iter()
-        .filter(|e| e.kind != FlowEventKind::Iteration)
-        .map(|e| e.flow_energy)
-        .sum::<f64>()
-        / 49.0;
-    println!("mean flow energy {flow:.5}");
-    let c0 = quality(&exemplar, &frames[0]).unwrap().coherence;
-    for (i, f) in frames.iter().enumerate().step_by(8) {
-        println!(
-            "frame {i}: {:.3}",
-            quality(&exemplar, f).unwrap().coherence / c0
-        );
-    }
-    println!(
-        "naive: {:.3}",
-        quality(&exemplar, &naive).unwrap().coherence / c0
-    );
-    if let Ok(dir) = std::env::var("FLOW_WRITE") {
-        // A strip: frames 0, 1, 2, 7, the last and the naive warp.
-        let picks = [
-            &frames[0],
-            &frames[1],
-            &frames[2],
-            &frames[7],
-            frames.last().unwrap(),
-            &naive,
-        ];
-        let (w, h) = (frames[0].width(), frames[0].height());
-        let strip = Image::from_fn(
-            3 * w * picks.len(),
-            3 * h,
-            frames[0].channels(),
-            |x, y, k| picks[x / 3 / w].pixel((x / 3) % w, y / 3)[k],
-        )
-        .unwrap();
-        std::fs::write(
-            format!("{dir}/flow_strip.png"),
-            crate::core::encode_png(&strip).unwrap(),
-        )
-        .unwrap();
-    }
-}
-
 /// Mean coherence of `frames` relative to `reference`'s.
 fn relative_coherence(exemplar: &Image, frames: &[Image], reference: &Image) -> f64 {
     let base = quality(exemplar, reference).unwrap().coherence;
@@ -394,32 +328,6 @@ fn frames_keep_their_detail_along_a_vortex() {
         "naive {} vs {last}",
         flat(&naive)
     );
-}
-
-#[test]
-#[ignore = "timing: FLOW_SIZE=512 cargo test --profile explore --lib flow_frame_timing -- --ignored --nocapture"]
-fn flow_frame_timing() {
-    let exemplar = sample("tiles_128");
-    let size: usize = std::env::var("FLOW_SIZE").map_or(256, |v| v.parse().unwrap());
-    let options = FlowOptions {
-        output_width: size,
-        output_height: size,
-        frames: 6,
-        ..FlowOptions::default()
-    };
-    let mut session = FlowSession::new(&exemplar, vortex(2.0), options).unwrap();
-    let mut frame_start = None;
-    loop {
-        let e = session.step().unwrap();
-        if e.kind == FlowEventKind::Frame && frame_start.is_none() {
-            frame_start = Some(std::time::Instant::now());
-        }
-        if e.kind == FlowEventKind::Done {
-            break;
-        }
-    }
-    let ms = frame_start.unwrap().elapsed().as_secs_f64() * 1e3 / 5.0;
-    println!("flow {size}x{size}: {ms:.1} ms per frame after the first");
 }
 
 #[test]

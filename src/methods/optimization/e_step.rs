@@ -33,16 +33,6 @@ pub struct Matches<'a> {
     pub mu: f32,
 }
 
-/// Replaces `output` by the minimiser of the energy for `m`, plus the soft-constraint term of
-/// `constraint` when given (section 4: a weighted average with the constraint colours).
-/// Returns the conjugate-gradient iterations of the gradient solve (the most over the
-/// channels; 0 without the gradient energy).
-pub fn e_step(m: &Matches<'_>, output: &mut Image, constraint: Option<&Constraint>) -> usize {
-    let mut sums = Sums::new(output, m.mu > 0.0);
-    sums.add(m, 0..m.matches.len());
-    sums.finish(m, output, constraint)
-}
-
 /// The E-step's running sums over the matched neighbourhoods, per output pixel: weights and
 /// weighted colours, and with the gradient term the per-edge weights and weighted target
 /// differences (indexed by the edge's first pixel). Nodes can be added in parts, so that a
@@ -553,6 +543,14 @@ mod tests {
     use crate::core::Rng;
     use crate::methods::optimization::features::{feature_map, gather};
     use crate::solvers::nn::{Neighbourhoods, patches::gaussian_falloff};
+
+    /// One whole E-step: every node's sums, then the minimiser (the session adds the nodes in
+    /// parts; the sums are the same).
+    fn e_step(m: &Matches<'_>, output: &mut Image, constraint: Option<&Constraint>) -> usize {
+        let mut sums = Sums::new(output, m.mu > 0.0);
+        sums.add(m, 0..m.matches.len());
+        sums.finish(m, output, constraint)
+    }
 
     fn setup() -> (Image, Vec<usize>, Vec<usize>, Vec<Pos>, Vec<f32>) {
         let mut rng = Rng::new(21);

@@ -63,14 +63,14 @@ pub struct LevelSetup {
 #[cfg(test)]
 impl LevelSetup {
     /// A level of tests: pixel energy, r = 0.8, PatchMatch with three sweeps, spacing a quarter
-    /// of `size`, nothing else on.
+    /// of `size` (at least 1: the node grid steps by it), nothing else on.
     #[must_use]
     pub fn plain(output_width: usize, output_height: usize, size: usize) -> Self {
         LevelSetup {
             output_width,
             output_height,
             size,
-            spacing: size / 4,
+            spacing: (size / 4).max(1),
             search: Search::PatchMatch,
             r: 0.8,
             mu: 0.0,

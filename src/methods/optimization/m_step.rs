@@ -6,7 +6,7 @@ use crate::core::Rng;
 use crate::solvers::nn::kmeans_tree::KMeansTree;
 use crate::solvers::nn::patchmatch::{self, QueryGrid};
 use crate::solvers::nn::{
-    FeatureMap, Neighbourhoods, Objective, Pos, Progress, Queries, Search, exact,
+    Neighbourhoods, Objective, Pos, Progress, Queries, Search, exact,
 };
 
 /// PatchMatch sweeps per M-step (forward, backward, forward). The EM loop calls it again every
@@ -24,13 +24,8 @@ pub struct Matcher {
 }
 
 impl Matcher {
-    /// Builds the search structure (the k-means tree, when that search is chosen).
-    #[must_use]
-    pub fn new(exemplar: FeatureMap, size: usize, search: Search, rng: &mut Rng) -> Self {
-        Self::over(Neighbourhoods::new(exemplar, size), search, rng)
-    }
-
-    /// Over given neighbourhoods (e.g. stored transformed, for the wavelet energy).
+    /// Builds the search structure (the k-means tree, when that search is chosen) over the
+    /// exemplar's neighbourhoods (stored plain, or transformed for the wavelet energy).
     #[must_use]
     pub fn over(space: Neighbourhoods, search: Search, rng: &mut Rng) -> Self {
         let tree = (search == Search::KMeansTree).then(|| KMeansTree::build(&space, rng));
@@ -55,32 +50,6 @@ impl Matcher {
         &self.space
     }
 
-    /// Improves the matches under `objective` (the plain distance, or with an occurrence
-    /// penalty), for queries made one node at a time (with soft-constraint weights when they
-    /// carry them), and leaves each match's cost in `costs` (recomputed first: the queries
-    /// changed in the E-step). Returns how many matches changed.
-    pub fn m_step<Q: Queries + Clone + Send + Sync>(
-        &self,
-        queries: &mut Q,
-        objective: &Objective<'_>,
-        grid: QueryGrid<'_>,
-        matches: &mut [Pos],
-        costs: &mut [f32],
-        rng: &mut Rng,
-    ) -> usize {
-        let mut progress = self.progress(matches.len());
-        self.resume(
-            queries,
-            objective,
-            grid,
-            (matches, costs),
-            rng,
-            &mut progress,
-            usize::MAX,
-        );
-        progress.changed()
-    }
-
     /// The progress of a new M-step over `nodes` nodes.
     #[must_use]
     pub fn progress(&self, nodes: usize) -> Progress {
@@ -91,8 +60,11 @@ impl Matcher {
         Progress::new(nodes, passes)
     }
 
-    /// [`Matcher::m_step`] in parts: at most `limit` more node visits from where `progress`
-    /// stopped, with the same result as one run. Returns true when the M-step is done.
+    /// Improves the matches under `objective` (the plain distance, or with an occurrence
+    /// penalty), for queries made one node at a time (with soft-constraint weights when they
+    /// carry them), and leaves each match's cost in `costs`: at most `limit` more node visits
+    /// from where `progress` stopped, with the same result as one run whatever the limits.
+    /// Returns true when the M-step is done.
     #[allow(clippy::too_many_arguments)]
     pub fn resume<Q: Queries + Clone + Send + Sync>(
         &self,

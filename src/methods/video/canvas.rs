@@ -126,14 +126,4 @@ impl Canvas {
         }
         error
     }
-
-    /// Whether voxel i and its neighbour along `axis` come from different patches (both covered).
-    #[must_use]
-    pub fn is_seam(&self, i: usize, axis: Axis) -> bool {
-        self.next(i, axis).is_some_and(|j| {
-            self.label[i] != self.label[j]
-                && self.label[i] != UNCOVERED
-                && self.label[j] != UNCOVERED
-        })
-    }
 }

@@ -232,22 +232,6 @@ impl Synthesis {
         out
     }
 
-    /// Sub-patch matching in 3-D (7.C): the area-normalised SSD (eq. 4 / eq. 2) between the
-    /// covered voxels of `region` and every translation of the source, from one 3-D FFT search,
-    /// then a draw with probability exp(-C / (k sigma^2)) (eq. 3). Falls back to a random offset
-    /// where nothing in the region is covered yet.
-    pub fn matching_offset(
-        &self,
-        region: Region,
-        allowed: Allowed,
-        used: &HashSet<Patch>,
-        rng: &mut Rng,
-        k_sigma: (f32, f32),
-    ) -> Result<Option<Patch>> {
-        let scored = self.score_offsets(region, allowed, used)?;
-        Ok(draw_offset(&scored, k_sigma, rng))
-    }
-
     /// Every unused offset covering `region` with its cost C(t) (eq. 4 / eq. 2, infinite where
     /// the search does not reach); the costs are None while nothing in the region is covered
     /// (nothing to match: the draw is uniform).
