@@ -9,7 +9,8 @@
 #
 # ./scripts/bench.sh --write-docs [options of compare.sh] rewrites docs/benchmarks.md whole (and
 # the README's headline rows): the comparison with the peer (./scripts/compare.sh, default: the
-# samples at 256x256, seeds 1-3) and the scaling tables (node scripts/bench-scaling.mjs with
+# samples at 256x256, seeds 1-3), the same comparison on $THREADS threads on each side (default 2;
+# THREADS=1 leaves it out) and the scaling tables (node scripts/bench-scaling.mjs with
 # $SCALING_ARGS, default the output sweep to 1024x1024 without the exemplar sweep).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,11 +23,16 @@ if [ "${1:-}" = --write-docs ]; then
     prev="$arg"
   done
   ./scripts/compare.sh "$@"
+  threads_args=()
+  if [ "${THREADS:-2}" != 1 ]; then
+    ./scripts/compare.sh "$@" --reuse-pkg --threads "${THREADS:-2}" --out "$out-threads"
+    threads_args=(--threads "$out-threads/results.json")
+  fi
   scaling="$(mktemp)"
   # shellcheck disable=SC2086
   node scripts/bench-scaling.mjs ${SCALING_ARGS:---outputs 256,512,1024 --exemplars none} | grep -E '^(\||$)' > "$scaling"
-  node scripts/write-benchmarks.mjs "$out/results.json" "$scaling" \
-    --command "./scripts/bench.sh --write-docs $* (SCALING_ARGS: ${SCALING_ARGS:---outputs 256,512,1024 --exemplars none})"
+  node scripts/write-benchmarks.mjs "$out/results.json" "$scaling" "${threads_args[@]}" \
+    --command "./scripts/bench.sh --write-docs $* (THREADS: ${THREADS:-2}, SCALING_ARGS: ${SCALING_ARGS:---outputs 256,512,1024 --exemplars none})"
   rm -f "$scaling"
   exit 0
 fi

@@ -5,6 +5,9 @@
 # prints the tables. Writes into --out (default results/compare/): results.json, results.tsv,
 # contact-sheets/*.png, the prepared exemplars/*.png, plan.json and wasm.json.
 #
+# With --threads N (N > 1), texsynth runs on N threads (native: the parallel feature on a rayon pool
+# of N; wasm: the threaded module, pkg/threads/, on a pool of N) and the peer on N threads too.
+#
 # Usage: ./scripts/compare.sh [--no-wasm] [--reuse-pkg] [options of `compare --help`]
 #   --no-wasm    skip the wasm timings (and the package build)
 #   --reuse-pkg  use pkg/ as it is instead of rebuilding it with ./scripts/build.sh
@@ -15,17 +18,28 @@ cd "$ROOT"
 
 wasm=1
 build_pkg=1
+threads=1
 pass=()
+prev=""
 for arg in "$@"; do
   case "$arg" in
     --no-wasm) wasm=0 ;;
     --reuse-pkg) build_pkg=0 ;;
     *) pass+=("$arg") ;;
   esac
+  [ "$prev" = --threads ] && threads="$arg"
+  prev="$arg"
 done
 
 # The bench crate is a workspace member outside default-members: only this builds it (and the peer).
-cargo build --release -p texsynth-bench --bin compare
+# Above one thread it is built with the parallel feature, in a target dir of its own so the two
+# builds do not undo each other.
+features=()
+if [[ "$threads" =~ ^[0-9]+$ ]] && [ "$threads" -gt 1 ]; then
+  features=(--features parallel)
+  export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$ROOT/target/parallel}"
+fi
+cargo build --release -p texsynth-bench --bin compare "${features[@]}"
 target_dir=$(cargo metadata --format-version 1 --no-deps | node -e \
   'process.stdout.write(JSON.parse(require("fs").readFileSync(0, "utf8")).target_directory)')
 bin="$target_dir/release/compare"

@@ -1,5 +1,6 @@
-// The wasm half of scripts/compare.sh: times texsynth's methods as the wasm package in Node (one
-// thread, the way a user runs it) on exactly the runs the native `compare` binary planned.
+// The wasm half of scripts/compare.sh: times texsynth's methods as the wasm package in Node on
+// exactly the runs the native `compare` binary planned: the single-threaded module when the plan
+// asks for one thread, else the threaded module (pkg/threads/) on a pool of that many threads.
 // Usage: node scripts/compare_wasm.mjs results/compare/plan.json   (writes wasm.json beside it)
 //
 // The plan (written by `compare --prepare-only`) lists the prepared exemplar PNGs with the hash
@@ -7,10 +8,9 @@
 // exemplars are decoded by the package's own Exemplar.fromBytes, the same decoder the native run
 // uses, so both see the same pixels; the hashes of the bytes and of every output go back so the
 // native side can check that and tell whether wasm produced the very same image.
-import { readFileSync, statSync, writeFileSync } from 'node:fs';
+import { existsSync, readFileSync, statSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { performance } from 'node:perf_hooks';
-import init, * as texsynth from '../pkg/texsynth.js';
 
 const planPath = process.argv[2];
 if (!planPath) {
@@ -20,8 +20,24 @@ if (!planPath) {
 const plan = JSON.parse(readFileSync(planPath, 'utf8'));
 const [width, height] = plan.size;
 
-const wasmUrl = new URL('../pkg/texsynth_bg.wasm', import.meta.url);
-await init({ module_or_path: readFileSync(wasmUrl) });
+const threads = plan.threads ?? 1;
+let texsynth;
+let wasmUrl;
+if (threads > 1) {
+  wasmUrl = new URL('../pkg/threads/texsynth_bg.wasm', import.meta.url);
+  if (!existsSync(wasmUrl)) {
+    console.error('compare_wasm: pkg/threads/ is missing; ./scripts/build.sh builds it with the pinned nightly');
+    process.exit(1);
+  }
+  process.env.TEXSYNTH_THREADS = String(threads);
+  texsynth = await import('../pkg/threads.js');
+  const size = await texsynth.initThreadPool(threads);
+  if (size !== threads) throw new Error(`the thread pool has ${size} threads, not ${threads}`);
+} else {
+  wasmUrl = new URL('../pkg/texsynth_bg.wasm', import.meta.url);
+  texsynth = await import('../pkg/texsynth.js');
+  await texsynth.default({ module_or_path: readFileSync(wasmUrl) });
+}
 
 /** 32-bit FNV-1a as 8 hex digits, as bench/src/prepare.rs computes it. */
 function fnv1a(bytes) {
@@ -88,6 +104,6 @@ for (const [i, ex] of plan.exemplars.entries()) {
 }
 
 const out = join(dirname(planPath), 'wasm.json');
-const result = { node: process.version, wasm_bytes: statSync(wasmUrl).size, size: [width, height], runs };
+const result = { node: process.version, wasm_bytes: statSync(wasmUrl).size, size: [width, height], threads, runs };
 writeFileSync(out, JSON.stringify(result, null, 2));
 console.error(`compare_wasm: wrote ${out}`);

@@ -1,7 +1,8 @@
 // Writes docs/benchmarks.md whole from a comparison run (compare.sh's results.json) and, when
 // given, the scaling tables (bench-scaling.mjs's output), and the headline rows of the README
-// between its `<!-- headline -->` markers. Run by `./scripts/bench.sh --write-docs`.
-//   node scripts/write-benchmarks.mjs RESULTS.json [SCALING.md] --command "..."
+// between its `<!-- headline -->` markers. Run by `./scripts/bench.sh --write-docs`. With
+// --threads, a second comparison run at N threads (compare.sh --threads N) gets its own section.
+//   node scripts/write-benchmarks.mjs RESULTS.json [SCALING.md] [--threads RESULTS.json] --command "..."
 import { readFileSync, writeFileSync } from 'node:fs';
 import { basename } from 'node:path';
 
@@ -9,6 +10,8 @@ const ROOT = new URL('../', import.meta.url).pathname;
 const args = process.argv.slice(2);
 const commandAt = args.indexOf('--command');
 const command = commandAt >= 0 ? args.splice(commandAt, 2)[1] : './scripts/bench.sh --write-docs';
+const threadsAt = args.indexOf('--threads');
+const threadsPath = threadsAt >= 0 ? args.splice(threadsAt, 2)[1] : null;
 const [resultsPath, scalingPath] = args;
 if (!resultsPath) throw new Error('usage: write-benchmarks.mjs RESULTS.json [SCALING.md] [--command TEXT]');
 const report = JSON.parse(readFileSync(resultsPath, 'utf8'));
@@ -77,6 +80,38 @@ for (const e of report.exemplars) {
   lines.push(`| ${e.name} | ${cells.join(' | ')} |`);
 }
 
+if (threadsPath) {
+  const threaded = JSON.parse(readFileSync(threadsPath, 'utf8'));
+  const n = threaded.threads;
+  const [tw, th] = threaded.output_size;
+  const one = (method) => report.summary.find((s) => s.method === method)?.figures;
+  lines.push('', `## On ${n} threads`, '',
+    `The same comparison with ${n} threads on each side: texsynth natively on a rayon pool of ${n}, as`,
+    `wasm the threaded module on a pool of ${n} in Node, and the peer with \`max_thread_count(${n})\``,
+    `(${tw}x${th}, seeds ${threaded.seeds.join(', ')}, ${threaded.exemplars.length} exemplars). Time ratios are method / peer on the`,
+    'same exemplar, geometric means (below 1 is better); "at least 5x" counts the exemplars where the',
+    "method takes at most a fifth of the peer's time; the speed-up is the mean time on one thread over",
+    `the mean time on ${n}, both from this page's runs.`, '',
+    '| method | time native | time wasm | at least 5x (native / wasm) | native ms | wasm ms | speed-up native | speed-up wasm | output as on one thread |',
+    '|---|---|---|---|---|---|---|---|---|');
+  for (const s of threaded.summary) {
+    const r = s.ratios ?? {};
+    const f = s.figures;
+    const o = one(s.method);
+    const peerRow = s.method === 'peer';
+    const within = (key) => threaded.results.filter((e) => e.method === s.method && e.ratios?.[key] != null && e.ratios[key] <= 0.2).length;
+    const rated = threaded.results.filter((e) => e.method === s.method && e.ratios).length;
+    const speedup = (a, b) => (a == null || b == null ? '—' : `${(a / b).toFixed(2)}x`);
+    // The peer is deterministic on one thread only; texsynth makes the same bytes at any count.
+    const same = threaded.results.filter((e) => e.method === s.method).every((e) => {
+      const base = report.results.find((b) => b.exemplar === e.exemplar && b.method === e.method);
+      return base && e.runs.every((run) => base.runs.find((b) => b.seed === run.seed)?.output_hash === run.output_hash);
+    });
+    const counts = peerRow ? '—' : `${within('native_time')} / ${within('wasm_time')} of ${rated}`;
+    lines.push(`| ${NAMES[s.method] ?? s.method} | ${peerRow ? '—' : fmt(r.native_time)} | ${peerRow ? '—' : fmt(r.wasm_time)} | ${counts} | ${ms(f.native_ms)} | ${ms(f.wasm_ms)} | ${speedup(o?.native_ms, f.native_ms)} | ${speedup(o?.wasm_ms, f.wasm_ms)} | ${same ? 'yes' : 'no'} |`);
+  }
+}
+
 if (scalingPath) {
   lines.push('', '## How time and memory grow', '',
     'Every method as wasm in Node, one fresh process per case, from the 128x128 tiles sample to',
@@ -85,7 +120,8 @@ if (scalingPath) {
 }
 
 lines.push('', '## The tools', '',
-  '- `./scripts/compare.sh [--dir DIR] [--size WxH] [--seeds 1,2,3] [--methods ...]`: the comparison above, on any folder of PNG and JPEG files; `--help` lists the options.',
+  '- `./scripts/compare.sh [--dir DIR] [--size WxH] [--seeds 1,2,3] [--methods ...] [--threads N]`: the comparison above, on any folder of PNG and JPEG files; `--help` lists the options.',
+  "- `node scripts/bench-threads.mjs [--rounds 3] [--cases ...] [--environments node,chromium]`: the threaded module on one thread against every thread of the machine, in Node and in the page's worker in headless Chromium, with the serial phases and the speed-up Amdahl's law projects for 8 threads.",
   '- `node scripts/bench-scaling.mjs [--outputs ...] [--exemplars ...] [--repeat N]`: time, longest step and peak memory against output and exemplar size; writes `www/scaling.svg`.',
   '- `node scripts/bench-ab.mjs A/pkg B/pkg --method M --size N --runs R`: two builds of the package timed interleaved in one process, for judging a speed change on a noisy machine.',
   '- `./scripts/bench.sh`: every method natively and as wasm at 256x256, and the max-flow solver against the reference.',

@@ -15,6 +15,8 @@ usage: compare [options]
   --crop WxH            cut the centre WxH out of each exemplar first (default: no crop)
   --exemplar-size N     then shrink so the longer side is at most N; 0 keeps any size (default: 256)
   --out DIR             where the results go (default: results/compare)
+  --threads N           threads for texsynth (rayon; the threaded wasm module) and the peer alike;
+                        above 1 needs the parallel feature (default: 1)
   --wasm FILE           timings of the wasm build in Node to merge (scripts/compare_wasm.mjs)
   --prepare-only        only write the prepared exemplars and plan.json, print the plan's path
   --help                this text";
@@ -31,6 +33,7 @@ pub struct Args {
     pub out: PathBuf,
     pub wasm: Option<PathBuf>,
     pub prepare_only: bool,
+    pub threads: usize,
 }
 
 impl Default for Args {
@@ -46,6 +49,7 @@ impl Default for Args {
             out: PathBuf::from("results/compare"),
             wasm: None,
             prepare_only: false,
+            threads: 1,
         }
     }
 }
@@ -92,6 +96,7 @@ pub fn parse(argv: &[String]) -> Result<Parsed, String> {
                 })?;
             }
             "--seeds" => args.seeds = seeds(value()?)?,
+            "--threads" => args.threads = threads(value()?)?,
             "--methods" => args.methods = methods(value()?)?,
             other => return Err(format!("unknown option '{other}' (see --help)")),
         }
@@ -108,6 +113,27 @@ fn size(flag: &str, v: &str) -> Result<(usize, usize), String> {
         return Err(format!("{flag}: sides must be at least 1, got '{v}'"));
     }
     Ok((w, h))
+}
+
+/// The largest thread count accepted: the wasm pool's own limit.
+const MAX_THREADS: usize = 64;
+
+/// A thread count from 1 to 64. Above 1, texsynth's methods need the `parallel` feature: a build
+/// without it would time the serial code and call it threaded.
+fn threads(v: &str) -> Result<usize, String> {
+    let n: usize = v
+        .parse()
+        .map_err(|_| format!("--threads: expected a whole number, got '{v}'"))?;
+    if !(1..=MAX_THREADS).contains(&n) {
+        return Err(format!("--threads: expected 1 to {MAX_THREADS}, got {n}"));
+    }
+    if n > 1 && !cfg!(feature = "parallel") {
+        return Err(format!(
+            "--threads {n}: this compare binary was built without the parallel feature \
+             (scripts/compare.sh builds it so)"
+        ));
+    }
+    Ok(n)
 }
 
 /// Comma-separated seeds, no duplicates (a repeated seed would repeat a run and bias the median).
@@ -178,6 +204,9 @@ mod tests {
         assert_eq!(a.crop, Some((300, 200)));
         assert_eq!(a.exemplar_size, 0);
         assert!(a.prepare_only);
+        assert_eq!(a.threads, 1);
+        assert_eq!(run("--threads 1").unwrap().threads, 1);
+        assert_eq!(run("--threads 2").is_ok(), cfg!(feature = "parallel"));
         assert_eq!(parse(&["--help".into()]), Ok(Parsed::Help));
     }
 
@@ -192,6 +221,8 @@ mod tests {
             ("--methods optimization,fast", "unknown method 'fast'"),
             ("--exemplar-size -3", "--exemplar-size"),
             ("--crop", "needs a value"),
+            ("--threads 0", "1 to 64"),
+            ("--threads two", "--threads"),
             ("--frobnicate", "unknown option"),
         ] {
             let err = run(line).unwrap_err();

@@ -16,6 +16,7 @@ mod report;
 mod runner;
 mod stats;
 mod table;
+mod threads;
 mod wasm;
 
 use std::process::ExitCode;
@@ -77,6 +78,7 @@ fn run(args: &Args, argv: &[String]) -> Result<(), String> {
     std::fs::create_dir_all(&sheets_dir)
         .map_err(|e| format!("cannot create {}: {e}", sheets_dir.display()))?;
     let size = (args.width, args.height);
+    let pool = threads::Pool::new(args.threads)?;
     let (mut infos, mut results) = (Vec::new(), Vec::new());
     for (i, ex) in exemplars.iter().enumerate() {
         eprintln!(
@@ -87,7 +89,15 @@ fn run(args: &Args, argv: &[String]) -> Result<(), String> {
             ex.image.width(),
             ex.image.height()
         );
-        let runs = runner::run_exemplar(ex, &args.methods, &args.seeds, size, wasm.as_ref());
+        let runs = runner::run_exemplar(
+            ex,
+            &args.methods,
+            &args.seeds,
+            size,
+            &pool,
+            args.threads,
+            wasm.as_ref(),
+        );
         let sheet = sheets_dir.join(format!("{}.png", ex.name));
         let order = write_sheet(&sheet, ex, &runs, args)?;
         infos.push(ExemplarInfo {
@@ -113,6 +123,7 @@ fn run(args: &Args, argv: &[String]) -> Result<(), String> {
         dir: args.dir.clone(),
         output_size: size,
         seeds: args.seeds.clone(),
+        threads: args.threads,
         methods: args.methods.iter().map(|m| m.name()).collect(),
         crop: args.crop,
         exemplar_size: args.exemplar_size,

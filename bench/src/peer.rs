@@ -1,5 +1,5 @@
 //! The peer: the texture-synthesis crate (Embark Studios, 0.8.2), a multi-resolution patch-based
-//! synthesizer, with its default settings, one thread, and the same exemplar pixels, output size
+//! synthesizer, with its default settings, as many threads as texsynth is given, and the same exemplar pixels, output size
 //! and seed as texsynth's methods. It uses image 0.23, so pixels cross as raw RGBA8 bytes.
 
 use std::time::Instant;
@@ -10,7 +10,12 @@ use ts::image as image023;
 
 use crate::methods::{Run, ms};
 
-pub fn run(exemplar: &Image, width: usize, height: usize, seed: u64) -> Result<Run, String> {
+pub fn run(
+    exemplar: &Image,
+    (width, height): (usize, usize),
+    seed: u64,
+    threads: usize,
+) -> Result<Run, String> {
     // The conversion to the peer's image type is input preparation, like decoding: not timed.
     let rgba = to_rgba8(exemplar);
     let input =
@@ -20,13 +25,13 @@ pub fn run(exemplar: &Image, width: usize, height: usize, seed: u64) -> Result<R
 
     let start = Instant::now();
     // build() makes the exemplar pyramids (the counterpart of texsynth's Session::new), run()
-    // synthesises; both are timed. One thread: texsynth is single-threaded, and so is the wasm
-    // build a user runs; this is also the peer's deterministic mode.
+    // synthesises; both are timed. The peer gets the threads texsynth gets; on one thread it is
+    // also deterministic.
     let session = ts::Session::builder()
         .add_example(input)
         .output_size(ts::Dims::new(width as u32, height as u32))
         .seed(seed)
-        .max_thread_count(1)
+        .max_thread_count(threads)
         .build()
         .map_err(|e| format!("texture-synthesis: {e}"))?;
     let generated = session.run(None);

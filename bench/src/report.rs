@@ -13,10 +13,10 @@ use crate::table::{self, NONE, Table};
 
 /// What the figures mean; printed under the tables and stored in the JSON.
 pub const NOTES: [&str; 8] = [
-    "time: wall time of session construction plus all steps (decoding and file IO excluded), median over seeds; native is this binary (release, one thread), wasm is the package in Node",
+    "time: wall time of session construction plus all steps (decoding and file IO excluded), median over seeds; native is this binary (release), wasm is the package in Node (the threaded module when threads > 1); texsynth and the peer get the same number of threads",
     "ms/step: median over seeds of time / steps; max step: the longest single step of any seed (a page's worst frame); the peer runs as one call, so it has no steps (—)",
     "quality: mean over seeds of the library's metrics on the 8-bit output; lower is better for coherence, completeness and histogram",
-    "ratios: method / peer on the same exemplar (time: ours native or wasm over the peer's native one-thread time); below 1 is better; summary rows are geometric means",
+    "ratios: method / peer on the same exemplar (time: ours native or wasm over the peer's native time on as many threads); below 1 is better; summary rows are geometric means",
     "goal: at least 3x faster than the peer (time ratio <= 0.33) with coherence and completeness ratios <= 1",
     "summary rows of the figures table are arithmetic means over exemplars (max for max step)",
     "flat: the detail metric, the share of output pixels whose 7x7 luminance standard deviation is below the exemplar's 10th percentile of it (the exemplar itself scores about 0.10; a washed-out output up to 1); texture optimization matches the output's histogram to the exemplar's, so its histogram distance is near 0 by construction",
@@ -96,6 +96,8 @@ pub struct Report {
     pub dir: PathBuf,
     pub output_size: (usize, usize),
     pub seeds: Vec<u64>,
+    /// Threads given to texsynth (native rayon pool, wasm thread pool) and to the peer alike.
+    pub threads: usize,
     pub methods: Vec<&'static str>,
     pub crop: Option<(usize, usize)>,
     pub exemplar_size: usize,
@@ -206,8 +208,9 @@ pub fn render(report: &Report) -> String {
     let (w, h) = report.output_size;
     let _ = writeln!(
         out,
-        "\n{w}x{h} output, seeds {:?}, {} exemplars from {}; {} cores ({}), node {}",
+        "\n{w}x{h} output, seeds {:?}, {} thread(s), {} exemplars from {}; {} cores ({}), node {}",
         report.seeds,
+        report.threads,
         report.exemplars.len(),
         report.dir.display(),
         report.machine.cores,

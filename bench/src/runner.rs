@@ -1,5 +1,5 @@
 //! Runs every method and seed on one exemplar: first all the timed syntheses, one after another
-//! on one thread (nothing else of ours running), then the quality metrics of all outputs on every
+//! on the asked number of threads (nothing else of ours running), then the quality metrics of all outputs on every
 //! core (untimed), then the wasm figures of the same runs are attached.
 
 use std::sync::Mutex;
@@ -15,6 +15,7 @@ use crate::methods::{self, Method, Run};
 use crate::peer;
 use crate::prepare::{Exemplar, fnv1a};
 use crate::stats::RunFigures;
+use crate::threads::Pool;
 use crate::wasm::WasmResults;
 
 #[derive(Debug, Clone, Serialize)]
@@ -47,17 +48,20 @@ pub fn run_exemplar(
     exemplar: &Exemplar,
     methods: &[Method],
     seeds: &[u64],
-    (width, height): (usize, usize),
+    size: (usize, usize),
+    pool: &Pool,
+    threads: usize,
     wasm: Option<&WasmResults>,
 ) -> Vec<MethodRuns> {
+    let (width, height) = size;
     let mut errors: Vec<Vec<RunError>> = vec![Vec::new(); methods.len()];
     let mut timed = Vec::new();
     for (mi, &method) in methods.iter().enumerate() {
         for &seed in seeds {
             let result = if method.is_peer() {
-                peer::run(&exemplar.image, width, height, seed)
+                peer::run(&exemplar.image, size, seed, threads)
             } else {
-                methods::run_ours(method, &exemplar.image, width, height, seed)
+                pool.install(|| methods::run_ours(method, &exemplar.image, width, height, seed))
             };
             match result {
                 Ok(run) => {

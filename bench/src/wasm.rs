@@ -26,6 +26,7 @@ pub fn write_plan(args: &Args, exemplars: &[Exemplar]) -> Result<PathBuf, String
     let plan = json!({
         "size": [args.width, args.height],
         "seeds": args.seeds,
+        "threads": args.threads,
         "methods": methods,
         "exemplars": exemplars.iter().map(|e| json!({
             "name": e.name,
@@ -44,7 +45,14 @@ pub struct WasmResults {
     pub node: String,
     pub wasm_bytes: Option<u64>,
     pub size: (usize, usize),
+    /// The wasm thread pool's size (1: the single-threaded module).
+    #[serde(default = "one")]
+    pub threads: usize,
     pub runs: Vec<WasmRun>,
+}
+
+fn one() -> usize {
+    1
 }
 
 #[derive(Debug, Clone, Deserialize, Serialize)]
@@ -77,6 +85,12 @@ pub fn load(path: &Path, args: &Args, exemplars: &[Exemplar]) -> Result<WasmResu
         return stale(format!(
             "output size {}x{}, this run {}x{}",
             results.size.0, results.size.1, args.width, args.height
+        ));
+    }
+    if results.threads != args.threads {
+        return stale(format!(
+            "{} thread(s), this run {}",
+            results.threads, args.threads
         ));
     }
     for run in &results.runs {

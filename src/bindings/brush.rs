@@ -154,6 +154,18 @@ impl TextureBrush {
         Ok(event)
     }
 
+    /// Sets nu of eq. 2 (the cost of a brushed pixel that keeps the base) for the strokes to
+    /// come; the strokes made and the undo history stay.
+    #[wasm_bindgen(js_name = setNu)]
+    pub fn set_nu(&mut self, nu: f64) -> JsResult<()> {
+        let weights = self.design.options().weights;
+        self.design.set_weights(LabellingWeights {
+            nu: nu as f32,
+            ..weights
+        })?;
+        Ok(())
+    }
+
     /// Goes back one stroke; false when there is none.
     pub fn undo(&mut self) -> bool {
         self.last = None;

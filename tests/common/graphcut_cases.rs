@@ -105,6 +105,18 @@ fn a_merge_honours_painted_constraints() {
     merge.render_into(&target).unwrap();
     merge.render_seams_into(&target).unwrap();
     assert!(error_message(merge.set_constraints(&[0; 5])).contains("constraint mask"));
+    // Paint for the tiles beyond their right edge: the first step names the pixel.
+    let mut outside = GraphcutMerge::new(options(&[
+        ("outputWidth", (w as u32).into()),
+        ("outputHeight", (h as u32).into()),
+    ]))
+    .unwrap();
+    outside.add_source(&tiles, 0, 0).unwrap();
+    outside.add_source(&sand, 36, 0).unwrap();
+    mask[3 * w + 80] = 1;
+    outside.set_constraints(&mask).unwrap();
+    let message = error_message(outside.step());
+    assert!(message.contains("(80, 3)") && message.contains("does not cover"), "{message}");
     assert!(
         error_message(GraphcutMerge::new(options(&[
             ("outputWidth", 0.into()),

@@ -56,6 +56,12 @@ test('stage 2: a stroke changes the base along a graph-cut seam, and undo restor
   assert.ok(redPixels(after) > 10, 'the seam is drawn');
   assert.match(await page.textContent('#ds-readout'), /pixels took the reference/);
   await page.screenshot({ path: `${RESULTS}/design-brush.png`, fullPage: true });
+  // A new ν is for the strokes to come: the stroke made and its undo stay.
+  await page.fill('#db-nu', '10');
+  await page.dispatchEvent('#db-nu', 'change');
+  assert.match(await page.textContent('#ds-readout'), /ν 10 for the next strokes/);
+  assert.equal(await page.getAttribute('body', 'data-strokes'), '1');
+  assert.deepEqual(await canvasPixels(page), after, 'the base keeps the stroke');
   await page.click('#db-undo');
   await page.waitForSelector('body[data-strokes="0"]');
   assert.deepEqual(await canvasPixels(page), before, 'undo restores the base');

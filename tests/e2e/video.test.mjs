@@ -34,6 +34,9 @@ test('the demo clip loops, with its x-t slice, loop point, playback and WebM', a
   await page.waitForSelector('body[data-video-done="true"]', { timeout: 120_000 });
   const frames = Number(await page.getAttribute('body', 'data-video-frames'));
   assert.ok(frames >= 2, `${frames} output frames`);
+  // The frame shown is the one of the seam window that the seam surface crosses most.
+  const seamPixels = Number(await page.getAttribute('body', 'data-video-seam-pixels'));
+  assert.ok(seamPixels > 0, `the frame shown (${await page.getAttribute('body', 'data-video-shown-frame')}) has ${seamPixels} seam pixels`);
   const slice = await canvasPixels(page, 'vt-slice');
   assert.equal(slice.length, 48 * frames * 4, 'the x-t slice is width x frames');
   assert.ok(new Set(slice).size > 20, 'the x-t slice is drawn');

@@ -1,9 +1,17 @@
 // Shared inputs of the Node tests against the built package (pkg/, made by ./scripts/build.sh):
 // the package itself, loaded the way a Node user loads it, and tiny exemplars so that hundreds
 // of sessions run in seconds.
-import { readFileSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 
-export const api = await import('../../pkg/node.js');
+/**
+ * The build under test: the single-threaded module, or with TEXSYNTH_TEST_BUILD=threads the
+ * threaded one (pkg/threads.js, on its default pool), which must take the same calls.
+ */
+export const build = process.env.TEXSYNTH_TEST_BUILD === 'threads' ? 'threads' : 'single';
+export const api = await import(build === 'threads' ? '../../pkg/threads.js' : '../../pkg/node.js');
+
+/** Whether the package holds the threaded module (the build had its nightly). */
+export const threadedBuilt = existsSync(new URL('../../pkg/threads/texsynth_bg.wasm', import.meta.url));
 
 /** The bytes of a sample texture of www/samples. */
 export const sampleBytes = (name = 'gravel_64') =>

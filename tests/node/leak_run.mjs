@@ -10,7 +10,9 @@ import { SESSIONS, exercise, inputFor } from './sessions.mjs';
 const [mode = 'free', countArg = '1000'] = process.argv.slice(2);
 const count = Number(countArg);
 if (typeof globalThis.gc !== 'function') throw new Error('run with node --expose-gc');
-const memory = api.initSync(sampleBytes()).memory ?? null; // already loaded: returns the exports
+// Already loaded: initSync returns the exports. The threaded module imports its shared memory
+// rather than exporting it; its pool hands it out.
+const memory = api.initSync(sampleBytes()).memory ?? api.threadPoolMemory?.() ?? null;
 if (!memory) throw new Error('the package exports no memory');
 
 /** Collects garbage and lets the FinalizationRegistry callbacks run (they are queued tasks). */

@@ -374,6 +374,8 @@ export class TextureBrush {
   free(): void;
   [Symbol.dispose](): void;
   stroke(reference: Exemplar, mask: Bytes, dx: number, dy: number): BrushStroke;
+  /** nu of eq. 2 for the strokes to come (finite, 0 to 1e9); the strokes made and the undo history stay. */
+  setNu(nu: number): void;
   undo(): boolean;
   renderInto(target: RgbaTarget): void;
   renderLabelsInto(target: RgbaTarget): void;

@@ -2,8 +2,11 @@
 // `{ module_or_path }`; this one also takes the input itself (a URL or path string, a `Request`,
 // a `Response` or a promise of one, bytes, or a `WebAssembly.Module`). Calling it again after the
 // module is loaded is a no-op that returns the same exports, so it is safe in every environment.
-import generatedInit, { initSync as generatedInitSync } from './texsynth.js';
-import './iterate.js';
+import * as lib from './texsynth.js';
+import { installProtocols } from './iterate.js';
+
+const { default: generatedInit, initSync: generatedInitSync } = lib;
+installProtocols(lib);
 
 const isOptionsObject = (input) =>
   input !== null && typeof input === 'object' && !(input instanceof URL) &&

@@ -3,12 +3,13 @@
 //   await session.run({ signal, onEvent })          // async, yields to the event loop between steps
 // Cancellation is by AbortSignal: `run` rejects with `signal.reason` (an AbortError by default)
 // before the next step once the signal is aborted. Steps themselves are never interrupted.
-// Every exported class with a `step()` method gets them, so a session added in Rust needs nothing here.
-import * as lib from './texsynth.js';
+// Every exported class with a `step()` method gets them, so a session added in Rust needs nothing
+// here; each module (the single-threaded one, the threaded one) installs them on its own classes.
 
-export const SESSION_CLASSES = Object.fromEntries(
-  Object.entries(lib).filter(([name, value]) => /^[A-Z]/.test(name) && typeof value === 'function' && typeof value.prototype?.step === 'function'),
-);
+/** The exported classes of a generated module `lib` that have a `step()` method. */
+export function sessionClasses(lib) {
+  return Object.values(lib).filter((value) => typeof value === 'function' && /^[A-Z]/.test(value.name) && typeof value.prototype?.step === 'function');
+}
 
 /** Resolves on the next turn of the event loop, without the 4 ms clamp of nested timeouts. */
 export function yieldToEventLoop() {
@@ -55,8 +56,11 @@ async function run({ signal, onEvent, maxSteps = Infinity } = {}) {
   return last;
 }
 
-for (const cls of Object.values(SESSION_CLASSES)) {
-  if (!cls || Object.hasOwn(cls.prototype, 'run')) continue;
-  Object.defineProperty(cls.prototype, Symbol.iterator, { value: steps, writable: true, configurable: true });
-  Object.defineProperty(cls.prototype, 'run', { value: run, writable: true, configurable: true });
+/** Gives every session class of the generated module `lib` iteration and `run()`. */
+export function installProtocols(lib) {
+  for (const cls of sessionClasses(lib)) {
+    if (Object.hasOwn(cls.prototype, 'run')) continue;
+    Object.defineProperty(cls.prototype, Symbol.iterator, { value: steps, writable: true, configurable: true });
+    Object.defineProperty(cls.prototype, 'run', { value: run, writable: true, configurable: true });
+  }
 }

@@ -7,9 +7,12 @@
 // Importing it loads the module and starts a pool of `os.availableParallelism()` or
 // `navigator.hardwareConcurrency` threads; `initThreadPool(n)` replaces the pool with one of n.
 import * as wasm from './threads/texsynth.js';
+import { installProtocols } from './iterate.js';
 
 export * from './threads/texsynth.js';
 export { yieldToEventLoop } from './iterate.js';
+
+installProtocols(wasm);
 
 const node = typeof process === 'object' && Boolean(process.versions?.node);
 

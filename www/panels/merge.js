@@ -111,6 +111,28 @@ export function createPanel(ui) {
     });
   }
 
+  /**
+   * Whether a pixel may be painted for image `value` (1: the first, 2: the second): inside that
+   * image, and for the second not on its edge where the first image lies on both sides (the merge
+   * refuses such paint: the seam cannot reach it). The brush leaves such pixels unpainted.
+   */
+  function mayPaint(value, x, y) {
+    const first = ui.exemplar();
+    const rects = [null, [0, 0, first.width, first.height], [layout.offset, 0, second.width, second.height]];
+    const inside = (k, px, py) => {
+      const [rx, ry, rw, rh] = rects[k];
+      return px >= rx && py >= ry && px < rx + rw && py < ry + rh;
+    };
+    if (!inside(value, x, y)) return false;
+    if (value === 1 || !inside(1, x, y)) return true;
+    return ![[1, 0], [-1, 0], [0, 1], [0, -1]].some(([dx, dy]) => {
+      const nx = x + dx;
+      const ny = y + dy;
+      const inOutput = nx >= 0 && ny >= 0 && nx < layout.width && ny < layout.height;
+      return inOutput && !inside(2, nx, ny) && inside(1, nx, ny);
+    });
+  }
+
   function paintAt(event) {
     const canvas = ui.outputCanvas;
     const box = canvas.getBoundingClientRect();
@@ -123,6 +145,7 @@ export function createPanel(ui) {
         const px = x + dx;
         const py = y + dy;
         if (dx * dx + dy * dy > r * r || px < 0 || py < 0 || px >= layout.width || py >= layout.height) continue;
+        if (value !== 0 && !mayPaint(value, px, py)) continue;
         mask[py * layout.width + px] = value;
       }
     }

@@ -188,7 +188,10 @@ export function createPanel(ui) {
     pending ??= (async () => {
       const c = await loadClip();
       const wire = { clip: { width: c.width, height: c.height, frames: c.frames, rgba: c.rgba } };
-      return remoteSession('VideoTextures', [wire, options()], wanted);
+      const o = options();
+      const made = await remoteSession('VideoTextures', [wire, o], wanted);
+      made.mode = o.mode;
+      return made;
     })();
     const current = pending;
     try {
@@ -223,6 +226,30 @@ export function createPanel(ui) {
     layer.getContext('2d').putImageData(frameImage(seams, width, height), 0, 0);
     ctx.drawImage(layer, 0, 0);
     shownFrame = t;
+    document.body.dataset.videoShownFrame = String(t);
+    document.body.dataset.videoSeamPixels = String(seamPixels(seams));
+  }
+
+  /**
+   * The frame of a loop's seam window (frames 0 to `last`) whose seam overlay has the most seam
+   * pixels: 7.A's seam surface crosses each pixel at its own frame, so a fixed frame may show
+   * none of it.
+   */
+  async function busiestSeamFrame(last) {
+    let best = 0;
+    let most = -1;
+    for (let t = 0; t <= last; t++) {
+      const count = seamPixels(await session.send('seams', t));
+      if (count > most) [best, most] = [t, count];
+    }
+    return best;
+  }
+
+  /** Pixels of a seam overlay that show a seam (spatial or temporal). */
+  function seamPixels(overlay) {
+    let count = 0;
+    for (let i = 3; i < overlay.length; i += 4) if (overlay[i] > 0) count++;
+    return count;
   }
 
   /** The x-t slice at the chosen row: x across, one line per frame, seams drawn. */
@@ -325,7 +352,12 @@ export function createPanel(ui) {
     async draw(event) {
       const frames = session.getter('frames');
       const p = event.patch;
-      const t = Math.min(frames - 1, Math.max(0, (p?.offsetT ?? 0) + Math.floor(clip.frames / 2)));
+      const loop = session.mode === 'loop';
+      // A loop's seams lie in the window around its transition; other modes show the middle of
+      // the clip as the new patch placed it.
+      const t = loop && event.loopFrame != null && event.patchesPlaced > 1
+        ? await busiestSeamFrame(Math.min(frames - 1, 2 * event.loopFrame))
+        : Math.min(frames - 1, Math.max(0, (p?.offsetT ?? 0) + Math.floor(clip.frames / 2)));
       ui.$('vt-row').max = String(session.height - 1);
       ui.$('vt-readout').textContent =
         (p ? `patch ${p.index + 1} at (x ${p.offsetX}, y ${p.offsetY}, t ${p.offsetT})` : `${event.patchesPlaced} patches`) +

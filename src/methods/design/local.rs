@@ -132,6 +132,20 @@ impl LocalDeformation {
         self.history.len()
     }
 
+    /// The weights of the labelling energy for the strokes to come; the base, the strokes made
+    /// and the undo history stay. Fails (changing nothing) on a bad weight.
+    pub fn set_weights(&mut self, weights: LabellingWeights) -> Result<()> {
+        weights.validate()?;
+        self.options.weights = weights;
+        Ok(())
+    }
+
+    /// The options the next stroke uses.
+    #[must_use]
+    pub fn options(&self) -> &BrushOptions {
+        &self.options
+    }
+
     /// Goes back one stroke; false if there is none.
     pub fn undo(&mut self) -> bool {
         match self.history.pop() {
@@ -387,6 +401,47 @@ mod tests {
         assert!(design.undo());
         assert_eq!(design.image(), &base);
         assert!(!design.undo());
+    }
+
+    /// A new nu applies to the next stroke and keeps the strokes made and their undo: at the
+    /// default every brushed pixel is taken, with nu 0 keeping the base costs a brushed pixel
+    /// nothing and the cut takes fewer.
+    #[test]
+    fn new_weights_keep_the_strokes_and_apply_to_the_next() {
+        let base = sample("gravel_64").with_channels(3).unwrap();
+        let reference = sample("paving_64").with_channels(3).unwrap();
+        let mut design = LocalDeformation::new(&base, BrushOptions::default()).unwrap();
+        let mask = disc_mask(64, 64, 30.0, 30.0, 6.0);
+        let stroke = |d: &mut LocalDeformation, dx| {
+            d.stroke(&Stroke {
+                reference: &reference,
+                mask: &mask,
+                dx,
+                dy: 0,
+            })
+            .unwrap()
+        };
+        let first = stroke(&mut design, -12);
+        let after_first = design.image().clone();
+        let weights = design.options().weights;
+        let bad = LabellingWeights {
+            nu: f32::NAN,
+            ..weights
+        };
+        assert!(design.set_weights(bad).unwrap_err().to_string().contains("nu"));
+        assert_eq!(design.options().weights, weights);
+        design
+            .set_weights(LabellingWeights { nu: 0.0, ..weights })
+            .unwrap();
+        assert_eq!(design.image(), &after_first);
+        assert_eq!(design.undo_depth(), 1);
+        let second = stroke(&mut design, 12);
+        let brushed = mask.iter().filter(|&&m| m).count();
+        assert!(first.taken >= brushed, "nu {}: {} of {brushed}", weights.nu, first.taken);
+        assert!(second.taken < brushed, "nu 0: {} of {brushed}", second.taken);
+        assert_eq!(design.undo_depth(), 2);
+        assert!(design.undo());
+        assert_eq!(design.image(), &after_first);
     }
 
     #[test]

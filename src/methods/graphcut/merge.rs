@@ -61,6 +61,7 @@ impl Merge {
                 reason: format!("value {bad} names no source (there are {})", sources.len()),
             });
         }
+        check_paint(width, height, &sources, &constraints)?;
         let channels = sources
             .iter()
             .map(|(img, _, _)| img.channels())
@@ -197,6 +198,52 @@ impl Merge {
     }
 }
 
+/// Refuses paint a merge could not honour, by the pixel and source it names: a pixel painted for
+/// a source that does not cover it, and a pixel painted for source k on the edge of k's
+/// rectangle where an earlier source covers the pixel and its neighbour beyond the edge (the
+/// seam graph holds such a pixel to the composite, so k could not take it).
+fn check_paint(
+    width: usize,
+    height: usize,
+    sources: &[(Image, i32, i32)],
+    constraints: &[u8],
+) -> Result<()> {
+    let inside = |k: usize, x: i64, y: i64| {
+        let (image, sx, sy) = &sources[k];
+        let (sx, sy) = (i64::from(*sx), i64::from(*sy));
+        (sx..sx + image.width() as i64).contains(&x) && (sy..sy + image.height() as i64).contains(&y)
+    };
+    let in_output = |x: i64, y: i64| (0..width as i64).contains(&x) && (0..height as i64).contains(&y);
+    let covered_before = |k: usize, x: i64, y: i64| (0..k).any(|j| inside(j, x, y));
+    for (i, &c) in constraints.iter().enumerate() {
+        if c == 0 {
+            continue;
+        }
+        let k = c as usize - 1;
+        let (x, y) = ((i % width) as i64, (i / width) as i64);
+        if !inside(k, x, y) {
+            return Err(Error::InvalidParameter {
+                name: "constraints",
+                reason: format!("pixel ({x}, {y}) is painted for source {k}, which does not cover it"),
+            });
+        }
+        let held = covered_before(k, x, y)
+            && [(1, 0), (-1, 0), (0, 1), (0, -1)].iter().any(|&(dx, dy)| {
+                let (nx, ny) = (x + dx, y + dy);
+                in_output(nx, ny) && !inside(k, nx, ny) && covered_before(k, nx, ny)
+            });
+        if held {
+            return Err(Error::InvalidParameter {
+                name: "constraints",
+                reason: format!(
+                    "pixel ({x}, {y}) is painted for source {k} on the edge of that source, where an earlier source lies on both sides: the seam cannot reach it; paint a pixel further inside"
+                ),
+            });
+        }
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::anatomy::NodeKind;
@@ -284,6 +331,31 @@ mod tests {
                 .to_string()
                 .contains("names no source")
         );
+        // Paint for a source that does not cover the pixel.
+        let mut paint = vec![0u8; 400];
+        paint[15] = 1;
+        let err = Merge::new(20, 20, vec![(img.clone(), 0, 0)], paint, false)
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(err.contains("(15, 0)") && err.contains("does not cover"), "{err}");
+        // Paint for the second source on its left edge, with the first source on both sides.
+        let mut paint = vec![0u8; 400];
+        paint[5 * 20 + 5] = 2;
+        let two = vec![(img.clone(), 0, 0), (img.clone(), 5, 0)];
+        let err = Merge::new(20, 20, two.clone(), paint, false)
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(err.contains("(5, 5)") && err.contains("edge"), "{err}");
+        // One pixel further inside, the paint is kept.
+        let mut paint = vec![0u8; 400];
+        paint[5 * 20 + 6] = 2;
+        let mut merge = Merge::new(20, 20, two, paint, false).unwrap();
+        while !merge.is_done() {
+            merge.step().unwrap();
+        }
+        assert_eq!(merge.source_map()[5 * 20 + 6], 1);
         assert!(
             Merge::new(20, 20, vec![(img, 30, 0)], vec![0; 400], false)
                 .err()

@@ -178,3 +178,37 @@ fn the_graph_slice_is_the_fullest_frame_and_matches_the_placement() {
     }
     assert!(seen_free > 100, "{seen_free} free nodes seen");
 }
+
+/// 7.C matching draws low-SSD offsets (eq. 3): over every matched placement, the drawn offset's
+/// cost lies in the cheapest tenth of the finite costs of its slice far more often than a
+/// uniform draw would put it there, and on average well below the slice's median.
+#[test]
+fn matching_draws_offsets_of_low_ssd() {
+    let mut s = session(Placement::Matching);
+    s.set_anatomy(true);
+    let (mut matched, mut cheapest_tenth, mut below_median) = (0, 0, 0);
+    while !s.is_done() {
+        let placed = s.step().unwrap().patch.is_some();
+        let Some(slice) = s.placement_costs().filter(|_| placed) else {
+            continue;
+        };
+        let surface = &slice.surface;
+        let (cx, cy) = surface.chosen.expect("the drawn offset is on its slice");
+        let drawn = surface.cost[cy * surface.width + cx];
+        let mut finite: Vec<f32> = surface.cost.iter().copied().filter(|c| c.is_finite()).collect();
+        if finite.len() < 10 {
+            continue;
+        }
+        finite.sort_by(f32::total_cmp);
+        matched += 1;
+        cheapest_tenth += usize::from(drawn <= finite[finite.len() / 10]);
+        below_median += usize::from(drawn <= finite[finite.len() / 2]);
+    }
+    assert!(matched >= 3, "{matched} matched placements");
+    // A uniform draw lands in the cheapest tenth one time in ten.
+    assert!(
+        cheapest_tenth * 2 >= matched,
+        "{cheapest_tenth} of {matched} draws in the cheapest tenth"
+    );
+    assert_eq!(below_median, matched, "every draw below its slice's median");
+}

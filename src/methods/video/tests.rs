@@ -362,3 +362,56 @@ fn a_huge_extended_output_is_refused_by_name() {
         assert!(err.to_string().contains("output"), "{err}");
     }
 }
+
+/// 7.A's seam is a surface, not a frame cut: in a clip of noise where the left part of the loop's
+/// two ends agrees early in the seam window and the right part late, each part switches from
+/// the first copy to the second where it agrees.
+#[test]
+fn the_loop_seam_switches_each_pixel_at_its_own_frame() {
+    let (w, h, n) = (32usize, 12usize, 48usize);
+    let mut rng = Rng::new(17);
+    let noise: Vec<[f32; 3]> = (0..w * h * n)
+        .map(|_| [rng.next_f32(), rng.next_f32(), rng.next_f32()])
+        .collect();
+    // The seam window holds clip frames 26-40 (first copy, canvas frames 0-14) over clip frames
+    // 2-16 (second copy, canvas frames 1-15). Frame 34 repeats frame 10, so 34 -> 10 is the
+    // transition; the left third repeats frames 5-6 at 29-30 (canvas frames 3-4), the right
+    // third frames 13-14 at 37-38 (canvas frames 11-12).
+    let source = |x: usize, y: usize, t: usize| -> usize {
+        let repeat = match t {
+            34 => Some(10),
+            29 | 30 if x < w / 3 => Some(t - 24),
+            37 | 38 if x >= w - w / 3 => Some(t - 24),
+            _ => None,
+        };
+        (repeat.unwrap_or(t) * h + y) * w + x
+    };
+    let input = Volume::from_fn(w, h, n, |x, y, t| noise[source(x, y, t)]).unwrap();
+    let options = Options {
+        refinement_patches: 0,
+        ..Options::default()
+    };
+    let mut session = Session::new(input, options).unwrap();
+    let tr = session.transition().unwrap();
+    assert_eq!((tr.from, tr.to, tr.half_window), (34, 10, 7));
+    run(&mut session);
+    let canvas = &session.synthesis().canvas;
+    let (cw, ch, frames) = canvas.size();
+    // Per pixel, the first canvas frame that shows the second copy.
+    let switch = |x: usize, y: usize| {
+        (0..frames)
+            .find(|&t| {
+                let label = canvas.label[(t * ch + y) * cw + x];
+                canvas.patches[label as usize].source == 1
+            })
+            .expect("the second copy ends the window")
+    };
+    for y in 0..h {
+        for x in 0..w / 3 - 1 {
+            assert_eq!(switch(x, y), 4, "left pixel ({x}, {y})");
+        }
+        for x in w - w / 3 + 1..w {
+            assert_eq!(switch(x, y), 12, "right pixel ({x}, {y})");
+        }
+    }
+}

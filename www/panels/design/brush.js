@@ -128,7 +128,15 @@ export function createStage({ ui, gallery, readout }) {
       });
       ui.$('db-clear').addEventListener('click', () => { mask?.fill(0); drawReference(); });
       ui.$('db-labels').addEventListener('change', drawBase);
-      ui.$('db-nu').addEventListener('change', () => { brush?.free(); brush = null; drawBase(); });
+      // A new nu applies to the strokes to come: the strokes made and their undo stay.
+      ui.$('db-nu').addEventListener('change', () => {
+        try {
+          brush?.setNu(Number(ui.$('db-nu').value));
+          readout(`ν ${ui.$('db-nu').value} for the next strokes`);
+        } catch (error) {
+          readout(error.message);
+        }
+      });
       ui.$('db-keep').addEventListener('click', () => {
         if (!brush) return;
         const index = gallery.add(`${gallery.baseItem.label} · brushed`, brush.toExemplar());
