@@ -322,7 +322,7 @@ pub(crate) const SCHEMA: Schema = Schema {
             key: "warp",
             kind: Kind::Boolean,
             default: Some("true"),
-            doc: "Bend each patch onto the context's features (scan placement).",
+            doc: "Bend each patch onto the context's features. Scan placement only: graph-cut placement (the default) cannot warp, and its events say warp 'unavailable'.",
         },
         Opt {
             key: "tolerance",
@@ -426,8 +426,8 @@ pub(crate) const SCHEMA: Schema = Schema {
         },
         EventField {
             key: "warp",
-            ts: "'none' | 'spline' | 'shepard' | 'skipped'",
-            doc: "The warp applied to the patch.",
+            ts: "'none' | 'spline' | 'shepard' | 'skipped' | 'unavailable'",
+            doc: "The warp applied to the patch: 'none' (nothing to align, or `warp` off), 'spline', 'shepard' (the spline failed), 'skipped' (it would move pixels too far), 'unavailable' (graph-cut placement, which cannot warp).",
         },
         EventField {
             key: "colourOnly",
@@ -510,6 +510,7 @@ impl JsSession for FeatureSynthesis {
             WarpKind::Spline => "spline",
             WarpKind::Shepard(_) => "shepard",
             WarpKind::Skipped => "skipped",
+            WarpKind::Unavailable => "unavailable",
         };
         SCHEMA.event(&[
             ("kind", if e.done { "done" } else { "placed" }.into()),

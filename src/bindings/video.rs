@@ -105,8 +105,8 @@ pub(crate) const SCHEMA: Schema = Schema {
             "fixedFrames",
             0,
             1 << 16,
-            Some("10"),
-            "k of 7.D for 'offsets' and 'extend': the first and last k frames fixed, then the first k removed, so the output loops; 0 = no loop. At most the clip's frame count.",
+            None,
+            "k of 7.D for 'offsets' and 'extend': the first and last k frames fixed, then the first k removed, so the output loops; 0 = no loop. At most the clip's frame count. Default: 10. Refused for 'loop', which loops through 7.A's transition.",
         ),
         count(
             "transitionWindow",
@@ -204,7 +204,7 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
         output_width: js.size("outputWidth")?,
         output_height: js.size("outputHeight")?,
         output_frames: js.size("outputFrames")?,
-        fixed_frames: js.size("fixedFrames")?.unwrap_or(d.fixed_frames),
+        fixed_frames: js.size("fixedFrames")?,
         transition_window: js.size("transitionWindow")?.unwrap_or(d.transition_window),
         placement: js
             .choice("placement", Placement::from_name)?

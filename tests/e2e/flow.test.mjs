@@ -54,6 +54,49 @@ test('the flow panel animates, compares with the naive warp and records a WebM',
   assert.deepEqual(errors, []);
 });
 
+test('a flow drawn by hand: a stroke to the right moves the texture to the right', async () => {
+  const { page, errors } = demo;
+  await openPanel(page, 'flow', 'tiles_64', 64);
+  await page.fill('#fl-frames', '4');
+  await page.dispatchEvent('#fl-frames', 'change');
+  await page.fill('#fl-strength', '2');
+  await page.dispatchEvent('#fl-strength', 'change');
+  await page.selectOption('#fl-flow', 'drawn');
+  assert.equal(await page.isVisible('#fl-draw-clear'), true);
+  assert.match(await page.textContent('#fl-arrows-caption'), /draw strokes here/);
+  const box = await page.locator('#fl-arrows').boundingBox();
+  await page.mouse.move(box.x + box.width * 0.1, box.y + box.height * 0.5);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width * 0.9, box.y + box.height * 0.5, { steps: 10 });
+  await page.mouse.up();
+  await page.waitForSelector('body[data-flow-strokes="1"]');
+  assert.match(await page.textContent('#fl-arrows-caption'), /the drawn flow \(1 stroke\): up to 2\.00 px per frame/);
+  await page.screenshot({ path: `${RESULTS}/flow-drawn.png`, fullPage: true });
+  while (await page.getAttribute('body', 'data-flow-frames') !== '1') {
+    await page.click('#step');
+    await page.waitForTimeout(20);
+  }
+  const first = await canvasPixels(page);
+  await page.click('#run');
+  await page.waitForSelector('body[data-flow-done="true"]', { timeout: 60_000 });
+  const last = await canvasPixels(page);
+  // The shift that best carries frame 1 onto frame 4 (3 frames at 2 px): to the right.
+  const error = (shift) => {
+    let sum = 0;
+    for (let y = 8; y < 56; y++) {
+      for (let x = 8; x < 56; x++) {
+        for (let c = 0; c < 3; c++) sum += (last[(y * 64 + x) * 4 + c] - first[(y * 64 + x - shift) * 4 + c]) ** 2;
+      }
+    }
+    return sum;
+  };
+  const shifts = [-8, -6, -4, -2, 0, 2, 4, 6, 8];
+  const best = shifts.reduce((a, b) => (error(b) < error(a) ? b : a));
+  assert.ok(best > 0, `the texture moved by ${best} px (errors ${shifts.map(error).join(', ')})`);
+  await page.selectOption('#fl-flow', 'vortex');
+  assert.deepEqual(errors, []);
+});
+
 test('the sub-pixel box reaches the animation: the same seed makes other frames', async () => {
   const { page, errors } = demo;
   await openPanel(page, 'flow', 'grass_64', 64);

@@ -76,6 +76,25 @@ test('sub-patch matching covers the output patch by patch and runs to done', asy
   assert.deepEqual(errors, []);
 });
 
+test('patches from scaled exemplars, smaller towards the top, run to done', async () => {
+  const { page, errors } = demo;
+  await openPanel(page, 'graphcut', 'brick_64', [160, 128]);
+  await page.fill('#gc-refine', '2');
+  await page.dispatchEvent('#gc-refine', 'change');
+  await page.fill('#gc-scales', '0.5, 1.5');
+  await page.dispatchEvent('#gc-scales', 'change');
+  await page.check('#gc-perspective');
+  await page.click('#run');
+  await page.waitForSelector('body[data-graphcut-done="true"]', { timeout: 60_000 });
+  assert.match(await page.textContent('#gc-readout'), /patches · .* · covered/);
+  await page.screenshot({ path: `${RESULTS}/graphcut-scales.png`, fullPage: true });
+  // Back to the defaults for the tests that follow.
+  await page.fill('#gc-scales', '');
+  await page.dispatchEvent('#gc-scales', 'change');
+  await page.uncheck('#gc-perspective');
+  assert.deepEqual(errors, []);
+});
+
 test('an output wider than 512 is scored on its central 512 columns, and the readout says so', async () => {
   const { page, errors } = demo;
   await openPanel(page, 'graphcut', 'gravel_64', [640, 96]);

@@ -26,6 +26,13 @@ test('the demo clip loops, with its x-t slice, loop point, playback and WebM', a
   await page.dispatchEvent('#vt-frames', 'change');
   await page.waitForFunction(() => /input clip: 48×48, 36 frames/.test(document.getElementById('vt-input-caption').textContent));
 
+  // k of 7.D is off in loop mode (the loop closes through 7.A's transition), on in the others.
+  assert.equal(await page.isDisabled('#vt-fixed'), true);
+  assert.match(await page.getAttribute('#vt-fixed-label', 'title'), /Off: a loop \(7\.A\)/);
+  await page.selectOption('#vt-mode', 'offsets');
+  assert.equal(await page.isDisabled('#vt-fixed'), false);
+  await page.selectOption('#vt-mode', 'loop');
+
   await page.click('#step');
   await page.waitForSelector('body[data-video-patches="1"]', { timeout: 60_000 });
   assert.match(await page.textContent('#vt-readout'), /patch 1 at \(x -?\d+, y -?\d+, t -?\d+\) .* voxels taken .* cut cost/);

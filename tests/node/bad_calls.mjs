@@ -228,7 +228,7 @@ export const BAD_CALLS = [
     flow.field();
   }, 'null pointer passed to rust'],
   ['VideoTextures.placementGraph: before setAnatomy is null', () => {
-    const video = new api.VideoTextures(tinyClip(), { fixedFrames: 2, transitionWindow: 4 });
+    const video = new api.VideoTextures(tinyClip(), { transitionWindow: 4 });
     video.step();
     if (video.placementGraph() !== null || video.placementCosts() !== null) throw new Error('recorded without setAnatomy');
   }, OK],

@@ -30,7 +30,7 @@ const SAMPLES = {
   FeatureSynthesis: { patchSize: 16, overlap: 4, featureCandidates: 8, featureMask: new Uint8Array(32 * 32) },
   TileableTexture: { overlapX: 4, overlapY: 4 },
   LayerDesign: { overlap: 2 },
-  VideoTextures: { mode: 'extend', outputWidth: 12, outputHeight: 12, outputFrames: 8 },
+  VideoTextures: { mode: 'extend', outputWidth: 12, outputHeight: 12, outputFrames: 8, fixedFrames: 2 },
 };
 
 /** A JS literal of the tables ('256', "'patchmatch'", '[32, 16, 8]') as a value. */

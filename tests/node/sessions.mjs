@@ -80,7 +80,7 @@ export const SESSIONS = {
     },
   },
   VideoTextures: {
-    make: (o, input = tinyClip()) => new api.VideoTextures(input, over({ fixedFrames: 2, transitionWindow: 4, refinementPatches: 0 }, o)),
+    make: (o, input = tinyClip()) => new api.VideoTextures(input, over({ transitionWindow: 4, refinementPatches: 0 }, o)),
     options: {
       mode: enumOf('loop', 'offsets', 'extend'), outputWidth: SIZE, outputHeight: SIZE, outputFrames: SIZE,
       fixedFrames: COUNT, transitionWindow: COUNT, placement: enumOf('random', 'matching'), seed: SEED, k: REAL,

@@ -13,6 +13,8 @@ import { showQuality } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
 import { recordToLink } from '../lib/record.js';
+import { fieldFromStrokes } from '../lib/flow-drawing.js';
+import { paintable, unpaintable } from '../lib/keyboard-brush.js';
 import {
   stepAnatomyHtml, drawCollage, drawSideViews, nodeUnderPointer, outlineNode,
 } from './optimization-anatomy.js';
@@ -32,6 +34,9 @@ const FLOWS = {
   'pulsing vortex': (s) => ({ type: 'vortex', strength: s, period: 40 }),
 };
 
+/** The flow choice whose field the user draws on the flow view (section 4.1's interactive flows). */
+const DRAWN = 'drawn';
+
 const PLAYBACK_FPS = 12;
 /** Finished frames kept for playback and recording (about 4 MB each at 1024x1024). */
 const MAX_KEPT_FRAMES = 600;
@@ -39,6 +44,7 @@ const MAX_KEPT_FRAMES = 600;
 const OPTIONS_HTML = `
   <label>Flow <select id="fl-flow">
     ${Object.keys(FLOWS).map((name) => `<option value="${name}">${name}</option>`).join('')}
+    <option value="${DRAWN}">drawn by hand</option>
   </select></label>
   <label title="pixels per frame at half the frame's shorter side">strength <input id="fl-strength" type="number" value="2" min="0" max="16" step="0.5"></label>
   <label title="weight of the flow term: higher follows the flow more closely, lower keeps the texture sharper">λ <input id="fl-lambda" type="number" value="0.2" min="0" max="100" step="0.05"></label>
@@ -76,6 +82,7 @@ const SIDE_HTML = `
   <p class="quality" id="fl-quality-drift"></p>
   <figure><canvas id="fl-arrows" width="140" height="140" aria-label="Flow field"></canvas>
     <figcaption id="fl-arrows-caption">the flow</figcaption></figure>
+  <button id="fl-draw-clear" type="button" hidden>Clear the drawn flow</button>
   <canvas id="fl-texture" class="plot" width="296" height="110" aria-label="Texture energy per frame"></canvas>
   <canvas id="fl-flow-energy" class="plot" width="296" height="110" aria-label="Flow energy per frame"></canvas>`;
 
@@ -92,7 +99,15 @@ export function createPanel(ui) {
   let playIndex = 0;
   let recording = false;
 
-  const spec = () => FLOWS[ui.$('fl-flow').value](Number(ui.$('fl-strength').value));
+  // Strokes of the drawn flow, each a list of [x, y] in shares of the frame.
+  let strokes = [];
+  let stroke = null;
+  const drawn = () => ui.$('fl-flow').value === DRAWN;
+  const strength = () => Number(ui.$('fl-strength').value);
+  /** The flow option: a generator description, or the drawn field at the output's size. */
+  const spec = () => (drawn()
+    ? fieldFromStrokes(strokes, ui.outputWidth(), ui.outputHeight(), strength())
+    : FLOWS[ui.$('fl-flow').value](strength()));
 
   function options() {
     return {
@@ -104,6 +119,46 @@ export function createPanel(ui) {
       subPixel: ui.$('fl-subpixel').checked,
       flow: spec(),
     };
+  }
+
+  /** The pointer on the flow view as shares of the frame. */
+  function sharesAt(event) {
+    const box = ui.$('fl-arrows').getBoundingClientRect();
+    return [(event.clientX - box.left) / box.width, (event.clientY - box.top) / box.height]
+      .map((v) => Math.min(1, Math.max(0, v)));
+  }
+
+  function drawStart(event) {
+    if (!drawn()) return;
+    stroke = [sharesAt(event)];
+    strokes.push(stroke);
+  }
+
+  function drawMove(event) {
+    if (!stroke) return;
+    const [x, y] = sharesAt(event);
+    const [lx, ly] = stroke[stroke.length - 1];
+    // Points a fiftieth of the frame apart: enough for a smooth direction, few to sum over.
+    if (Math.hypot(x - lx, y - ly) < 0.02) return;
+    stroke.push([x, y]);
+    drawArrows();
+  }
+
+  /** A finished stroke is a new flow: the animation starts over (as any option change does). */
+  function drawEnd() {
+    if (!stroke) return;
+    if (stroke.length < 2) strokes.pop();
+    stroke = null;
+    ui.$('fl-flow').dispatchEvent(new Event('change'));
+  }
+
+  /** The flow view takes strokes (pointer or keyboard) while the drawn flow is chosen. */
+  function syncDrawing() {
+    const canvas = ui.$('fl-arrows');
+    ui.$('fl-draw-clear').hidden = !drawn();
+    canvas.classList.toggle('paintable', drawn());
+    if (drawn()) paintable(canvas, 'Draw the flow: each stroke is a direction the texture moves');
+    else unpaintable(canvas);
   }
 
   const anatomyOn = () => ui.$('fl-anatomy-on').checked;
@@ -200,7 +255,7 @@ export function createPanel(ui) {
     const [w, h] = [ui.outputWidth(), ui.outputHeight()];
     let field;
     try {
-      field = flowField(spec(), w, h, t);
+      field = drawn() ? spec() : flowField(spec(), w, h, t);
     } catch (error) {
       ui.$('fl-arrows-caption').textContent = error.message;
       return;
@@ -222,6 +277,20 @@ export function createPanel(ui) {
         const [x0, y0] = [x * sx, y * sy];
         arrow(ctx, x0 - vx / 2, y0 - vy / 2, x0 + vx / 2, y0 + vy / 2);
       }
+    }
+    if (drawn()) {
+      ctx.strokeStyle = '#6fb3d2';
+      ctx.lineWidth = 2;
+      for (const points of strokes) {
+        ctx.beginPath();
+        points.forEach(([x, y], i) => ctx[i ? 'lineTo' : 'moveTo'](x * canvas.width, y * canvas.height));
+        ctx.stroke();
+      }
+      ui.$('fl-arrows-caption').textContent = strokes.length === 0
+        ? 'draw strokes here: the texture will move along them'
+        : `the drawn flow (${strokes.length} stroke${strokes.length > 1 ? 's' : ''}): up to ${max.toFixed(2)} px per frame`;
+      document.body.dataset.flowStrokes = String(strokes.length);
+      return;
     }
     ui.$('fl-arrows-caption').textContent = `the flow at frame ${t + 1}: up to ${max.toFixed(2)} px per frame`;
   }
@@ -297,12 +366,25 @@ export function createPanel(ui) {
     mount() {
       ui.$('fl-record').addEventListener('click', record);
       for (const id of ['fl-flow', 'fl-strength']) ui.$(id).addEventListener('change', () => drawArrows());
+      const arrows = ui.$('fl-arrows');
+      arrows.onpointerdown = drawStart;
+      arrows.onpointermove = drawMove;
+      this.onPointerUp = drawEnd;
+      window.addEventListener('pointerup', this.onPointerUp);
+      ui.$('fl-flow').addEventListener('change', syncDrawing);
+      ui.$('fl-draw-clear').addEventListener('click', () => {
+        strokes = [];
+        ui.$('fl-flow').dispatchEvent(new Event('change'));
+      });
+      syncDrawing();
       ui.$('fl-anatomy-on').addEventListener('change', toggleAnatomy);
       ui.outputCanvas.onpointermove = hover;
       startPlayback();
     },
     unmount() {
       ui.outputCanvas.onpointermove = null;
+      window.removeEventListener('pointerup', this.onPointerUp);
+      unpaintable(ui.$('fl-arrows'));
       clearInterval(playTimer);
       playTimer = null;
     },

@@ -25,6 +25,8 @@ const OPTIONS_HTML = `
   <label><input id="gc-gradient" type="checkbox"> gradient cost M′</label>
   <label><input id="gc-rotate" type="checkbox"> rotations</label>
   <label><input id="gc-mirror" type="checkbox"> mirrors</label>
+  <label title="also take patches from the exemplar scaled by these factors (at most 4, comma-separated), as in the paper's figure of scaled patches">scales <input id="gc-scales" type="text" value="" placeholder="e.g. 0.5, 2" size="9"></label>
+  <label title="with scales: smaller scales towards the top of the output, as in the paper's perspective example"><input id="gc-perspective" type="checkbox"> perspective</label>
   <label><input id="gc-tileable" type="checkbox"> tileable</label>
   <span class="views">show:
     <label><input id="gc-seams" class="view" type="checkbox" checked> seams</label>
@@ -63,6 +65,9 @@ export function createPanel(ui) {
       gradientCost: ui.$('gc-gradient').checked,
       rotate: ui.$('gc-rotate').checked,
       mirror: ui.$('gc-mirror').checked,
+      // Each entry as typed: one that is not a number reaches the session, which names it.
+      scales: ui.$('gc-scales').value.split(/[\s,]+/).filter(Boolean).map(Number),
+      perspective: ui.$('gc-perspective').checked,
       tileable: ui.$('gc-tileable').checked,
     };
   }

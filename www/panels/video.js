@@ -19,6 +19,8 @@ export const title = 'Video textures';
 const DEMO_CLIP = './samples/clips/water.png';
 const PLAYBACK_FPS = 15;
 
+const FIXED_TITLE = 'frames held fixed at both ends of random offsets or a spatial extension so that it loops (7.D); 0: no loop';
+
 const OPTIONS_HTML = `
   <label>Clip <select id="vt-source">
     <option value="demo">demo: water (128×128, 60 frames)</option>
@@ -28,7 +30,7 @@ const OPTIONS_HTML = `
   <label title="frames are scaled to this size before synthesis">size <input id="vt-size" type="number" value="64" min="16" max="256" step="8"></label>
   <label title="frames taken from the clip">frames <input id="vt-frames" type="number" value="40" min="4" max="240" step="1"></label>
   <label>Mode <select id="vt-mode">
-    <option value="loop">loop (7.A, 7.D)</option>
+    <option value="loop">loop (7.A)</option>
     <option value="offsets">random temporal offsets (7.B)</option>
     <option value="extend">spatial extension (7.E)</option>
   </select></label>
@@ -37,7 +39,7 @@ const OPTIONS_HTML = `
     <option value="matching">spatio-temporal matching (7.C)</option>
   </select></label>
   <label title="output frames (offsets and extension; a loop is as long as its transition); 0: the default">out frames <input id="vt-out-frames" type="number" value="0" min="0" max="480" step="1"></label>
-  <label title="frames held fixed at both ends of a spatial extension so that it loops (7.D); 0: no loop">k <input id="vt-fixed" type="number" value="10" min="0" max="60" step="1"></label>
+  <label id="vt-fixed-label" title="${FIXED_TITLE}">k <input id="vt-fixed" type="number" value="10" min="0" max="60" step="1"></label>
   <label class="views" title="the row the x-t slice is taken at">slice row <input id="vt-row" class="view" type="range" min="0" max="63" value="32"></label>
   <label title="the cost surface (at the drawn time shift) and the seam graph (in one frame) of each placement"><input id="vt-anatomy-on" class="view" type="checkbox"> placement anatomy</label>
   <button id="vt-record" type="button" class="view">Record WebM</button>
@@ -172,9 +174,10 @@ export function createPanel(ui) {
     const o = {
       mode,
       placement: ui.$('vt-placement').value,
-      fixedFrames: Math.round(Number(ui.$('vt-fixed').value) || 0),
       seed: ui.seed(),
     };
+    // A loop (7.A) closes through its transition; k of 7.D is for the other modes.
+    if (mode !== 'loop') o.fixedFrames = Math.round(Number(ui.$('vt-fixed').value) || 0);
     // A loop is as long as the transition it finds; the other modes take a length.
     if (outFrames > 0 && mode !== 'loop') o.outputFrames = outFrames;
     if (mode === 'extend') {
@@ -320,6 +323,13 @@ export function createPanel(ui) {
     sideHtml: SIDE_HTML,
     ownsOutputSize: "the video's frames take this panel's own size field (a spatial extension is twice it)",
     mount() {
+      const syncMode = () => {
+        const loop = ui.$('vt-mode').value === 'loop';
+        ui.$('vt-fixed').disabled = loop;
+        ui.$('vt-fixed-label').title = loop ? `${FIXED_TITLE}. Off: a loop (7.A) closes through its transition` : FIXED_TITLE;
+      };
+      ui.$('vt-mode').addEventListener('change', syncMode);
+      syncMode();
       ui.$('vt-record').addEventListener('click', record);
       ui.$('vt-anatomy-on').addEventListener('change', toggleAnatomy);
       ui.$('vt-row').addEventListener('input', () => drawSlice().catch(() => {}));

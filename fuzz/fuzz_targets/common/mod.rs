@@ -234,13 +234,18 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                     None
                 })
             };
+            let mode = video::Mode::from_name(*u.choose(&["loop", "offsets", "extend"])?)
+                .expect("known");
             let o = video::Options {
-                mode: video::Mode::from_name(*u.choose(&["loop", "offsets", "extend"])?)
-                    .expect("known"),
+                mode,
                 output_width: pick(u, v)?,
                 output_height: pick(u, v)?,
                 output_frames: pick(u, v)?,
-                fixed_frames: count(u, 4, v)?,
+                fixed_frames: if u.arbitrary()? {
+                    Some(count(u, 4, v)?)
+                } else {
+                    None
+                },
                 transition_window: count(u, 8, v)?.max(3),
                 placement: video::Placement::from_name(*u.choose(&["random", "matching"])?)
                     .expect("known"),

@@ -18,6 +18,9 @@ pub enum WarpKind {
     Shepard(SplineFailure),
     /// A warp was fitted but would move pixels farther than a quarter patch: not used.
     Skipped,
+    /// Graph-cut placement lays whole-exemplar patches along seams and has no warp, whatever
+    /// the `warp` option says (the scan placement warps).
+    Unavailable,
 }
 
 /// The farthest gdist (tau = 10) a correspondence may have: a pixel or so of position and a few

@@ -63,7 +63,9 @@ pub struct FeatureOptions {
     pub overlap: Option<usize>,
     /// Weight of the feature cost against the colour SSD. Default: 0.5 (the paper's).
     pub feature_weight: f32,
-    /// Bend each patch onto the context's features (section 2.2). Default: true.
+    /// Bend each patch onto the context's features (section 2.2). Default: true. Only the scan
+    /// placement warps: graph-cut placement's events report
+    /// [`crate::features::WarpKind::Unavailable`].
     pub warp: bool,
     /// Candidates within (1 + tolerance) of the best total cost are drawn at random. Default: 0.1.
     pub tolerance: f32,

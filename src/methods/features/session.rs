@@ -49,7 +49,7 @@ pub struct FeatureEvent {
     pub context_features: usize,
     /// Feature correspondences the warp used (0 with graph-cut placement, which does not warp).
     pub correspondences: usize,
-    /// The warp applied to the patch ([`WarpKind::None`] with graph-cut placement).
+    /// The warp applied to the patch ([`WarpKind::Unavailable`] with graph-cut placement).
     pub warp: WarpKind,
     /// True when the choice used colour only (no oriented features to match).
     pub colour_only: bool,
@@ -360,7 +360,7 @@ impl FeatureSynthesis {
             colour_cost: choice.map_or(0.0, |c| c.colour_cost),
             context_features: choice.map_or(0, |c| c.context_features),
             correspondences: 0,
-            warp: WarpKind::None,
+            warp: WarpKind::Unavailable,
             colour_only: choice.is_some_and(|c| c.colour_only),
             done: false,
         })

@@ -116,7 +116,12 @@ mod synthesis {
             events
                 .iter()
                 .skip(1)
-                .all(|e| e.colour_only && e.warp == WarpKind::None)
+                .all(|e| e.colour_only
+                    && e.warp
+                        == match placement {
+                            FeaturePlacement::Scan => WarpKind::None,
+                            FeaturePlacement::Graphcut => WarpKind::Unavailable,
+                        })
         );
         assert!(map.iter().all(|&m| !m));
     }
@@ -237,7 +242,9 @@ mod graphcut_placement {
                 .skip(1)
                 .any(|e| e.context_features > 0 && e.feature_cost > 0.0)
         );
-        assert!(events.iter().all(|e| e.warp == WarpKind::None));
+        // The warp option is on by default, and graph-cut placement says it cannot warp.
+        assert!(options.warp);
+        assert!(events.iter().all(|e| e.warp == WarpKind::Unavailable));
         assert!(map.iter().filter(|&&m| m).count() > 200);
         assert!(img.data().chunks(3).all(|p| p.iter().sum::<f32>() > 0.0));
         assert_eq!(run(options.clone()).0, img, "the run repeats exactly");

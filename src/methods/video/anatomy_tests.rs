@@ -15,7 +15,7 @@ fn session(placement: Placement) -> Session {
         output_width: Some(28),
         output_height: Some(24),
         output_frames: Some(12),
-        fixed_frames: 0,
+        fixed_frames: Some(0),
         placement,
         refinement_patches: 4,
         seed: 3,

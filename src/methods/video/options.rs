@@ -67,9 +67,11 @@ pub struct Options {
     /// Output frames, without 7.D's removed first k; refused for [`Mode::Loop`], which chooses
     /// its own length.
     pub output_frames: Option<usize>,
-    /// k of 7.D: the first and last k frames fixed while synthesising, then the first k removed.
-    /// Default: 10 ("k = 10 in our implementation"). 0 turns the constraint off (no loop).
-    pub fixed_frames: usize,
+    /// k of 7.D for [`Mode::Offsets`] and [`Mode::Extend`]: the first and last k frames fixed
+    /// while synthesising, then the first k removed, so that the output loops. Default (None):
+    /// [`DEFAULT_FIXED_FRAMES`]. `Some(0)` turns the constraint off (no loop). Refused for
+    /// [`Mode::Loop`], whose loop is 7.A's transition.
+    pub fixed_frames: Option<usize>,
     /// The most frames of the seam window around the transition of 7.A. Default: 60 (the
     /// paper's "60-frame spatio-temporal window"); shorter clips get a shorter window.
     pub transition_window: usize,
@@ -96,7 +98,7 @@ impl Default for Options {
             output_width: None,
             output_height: None,
             output_frames: None,
-            fixed_frames: 10,
+            fixed_frames: None,
             transition_window: 60,
             placement: Placement::Random,
             seed: 1,
@@ -108,11 +110,23 @@ impl Default for Options {
     }
 }
 
+/// k of 7.D when `fixed_frames` is not given: "k = 10 in our implementation".
+pub const DEFAULT_FIXED_FRAMES: usize = 10;
+
 fn invalid(name: &'static str, reason: String) -> Error {
     Error::InvalidParameter { name, reason }
 }
 
 impl Options {
+    /// k of 7.D for this mode: 0 for [`Mode::Loop`], else `fixed_frames` or its default.
+    #[must_use]
+    pub fn fixed(&self) -> usize {
+        match self.mode {
+            Mode::Loop => 0,
+            Mode::Offsets | Mode::Extend => self.fixed_frames.unwrap_or(DEFAULT_FIXED_FRAMES),
+        }
+    }
+
     /// The output size (width, height, frames as the user sees them) for an input of this size,
     /// or an error naming the option that does not fit the mode.
     pub fn output_size(&self, input: (usize, usize, usize)) -> Result<(usize, usize, usize)> {
@@ -136,6 +150,14 @@ impl Options {
         }
         match self.mode {
             Mode::Loop => {
+                if let Some(k) = self.fixed_frames {
+                    return Err(invalid(
+                        "fixedFrames",
+                        format!(
+                            "mode 'loop' loops through 7.A's transition; the fixed frames of 7.D (k = {k}) are for 'offsets' and 'extend'; leave it out"
+                        ),
+                    ));
+                }
                 if self.output_frames.is_some() {
                     return Err(invalid(
                         "outputFrames",
@@ -162,7 +184,7 @@ impl Options {
                         format!("{width}x{height}x{frames} is empty"),
                     ));
                 }
-                let k = self.fixed_frames;
+                let k = self.fixed();
                 if k > 0 && k > input.2 {
                     return Err(invalid(
                         "fixedFrames",

@@ -127,7 +127,7 @@ impl Session {
                 })
             }
             Mode::Offsets | Mode::Extend => {
-                let k = options.fixed_frames;
+                let k = options.fixed();
                 let total = size.2 + k;
                 let search_bytes = if options.placement == Placement::Matching {
                     let side = region_side(input, (size.0, size.1, total), options.mode);

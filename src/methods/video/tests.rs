@@ -163,7 +163,7 @@ fn the_fixed_frames_of_7d_stay_unchanged_and_the_video_loops() {
         output_width: Some(18),
         output_height: Some(14),
         output_frames: Some(16),
-        fixed_frames: 3,
+        fixed_frames: Some(3),
         ..Options::default()
     };
     let mut session = Session::new(input.clone(), options).unwrap();
@@ -201,7 +201,7 @@ fn equal_frames_fix_the_inputs_own_first_frames() {
     let options = Options {
         mode: Mode::Offsets,
         output_frames: Some(18),
-        fixed_frames: 2,
+        fixed_frames: Some(2),
         ..Options::default()
     };
     let mut session = Session::new(input.clone(), options).unwrap();
@@ -223,7 +223,7 @@ fn the_spatially_extended_output_has_the_requested_size_and_no_uncovered_voxel()
             output_width: Some(26),
             output_height: Some(21),
             output_frames: Some(14),
-            fixed_frames: 2,
+            fixed_frames: Some(2),
             placement,
             ..Options::default()
         };
@@ -240,7 +240,7 @@ fn random_temporal_offsets_cover_a_longer_video() {
     let options = Options {
         mode: Mode::Offsets,
         output_frames: Some(30),
-        fixed_frames: 0,
+        fixed_frames: Some(0),
         ..Options::default()
     };
     let mut session = Session::new(clip(8, 8, 10, 2), options).unwrap();
@@ -257,7 +257,7 @@ fn the_same_seed_gives_the_same_video() {
         mode: Mode::Extend,
         output_width: Some(16),
         output_frames: Some(10),
-        fixed_frames: 2,
+        fixed_frames: Some(2),
         seed: 9,
         ..Options::default()
     };
@@ -279,6 +279,18 @@ fn bad_input_gives_named_errors() {
         .to_string();
     assert!(err.contains("0x4x2"), "{err}");
     let small = clip(8, 8, 10, 1);
+    // A loop closes through 7.A's transition: 7.D's k is refused, even at its default value.
+    for k in [0, 10] {
+        let loop_with_k = Options {
+            fixed_frames: Some(k),
+            ..Options::default()
+        };
+        let err = Session::new(small.clone(), loop_with_k)
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(err.contains("fixedFrames") && err.contains("'loop'"), "{err}");
+    }
     let too_big = Options {
         mode: Mode::Extend,
         output_width: Some(2048),
@@ -321,7 +333,7 @@ fn bad_input_gives_named_errors() {
         small.clone(),
         Options {
             mode: Mode::Extend,
-            fixed_frames: 11,
+            fixed_frames: Some(11),
             ..Options::default()
         },
     )
@@ -353,7 +365,7 @@ fn a_huge_extended_output_is_refused_by_name() {
             output_width: Some(w),
             output_height: Some(h),
             output_frames: Some(t),
-            fixed_frames: 0,
+            fixed_frames: Some(0),
             ..Options::default()
         };
         let err = Session::new(clip(8, 8, 6, 1), options)

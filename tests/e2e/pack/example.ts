@@ -47,7 +47,7 @@ async function everything(): Promise<void> {
   map.paint(3, 4, 2, true);
   const fg = FeatureSynthesis.withFeatureMap(ex, map, { patchSize: 32, warp: true, extraInputs: ['mirror'] });
   for (const event of new FeatureSynthesis(ex, { outputWidth: 64 })) {
-    const w: 'none' | 'spline' | 'shepard' | 'skipped' = event.warp;
+    const w: 'none' | 'spline' | 'shepard' | 'skipped' | 'unavailable' = event.warp;
   }
   const fe = fg.step();
   const pairs: Float32Array = fg.placement().pairs;
