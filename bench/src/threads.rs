@@ -20,7 +20,10 @@ impl Pool {
         }
         #[cfg(not(feature = "parallel"))]
         {
-            assert_eq!(threads, 1, "more than one thread needs the parallel feature");
+            assert_eq!(
+                threads, 1,
+                "more than one thread needs the parallel feature"
+            );
             Ok(Pool {})
         }
     }

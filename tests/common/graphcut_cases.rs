@@ -116,7 +116,10 @@ fn a_merge_honours_painted_constraints() {
     mask[3 * w + 80] = 1;
     outside.set_constraints(&mask).unwrap();
     let message = error_message(outside.step());
-    assert!(message.contains("(80, 3)") && message.contains("does not cover"), "{message}");
+    assert!(
+        message.contains("(80, 3)") && message.contains("does not cover"),
+        "{message}"
+    );
     assert!(
         error_message(GraphcutMerge::new(options(&[
             ("outputWidth", 0.into()),

@@ -234,8 +234,8 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                     None
                 })
             };
-            let mode = video::Mode::from_name(*u.choose(&["loop", "offsets", "extend"])?)
-                .expect("known");
+            let mode =
+                video::Mode::from_name(*u.choose(&["loop", "offsets", "extend"])?).expect("known");
             let o = video::Options {
                 mode,
                 output_width: pick(u, v)?,

@@ -69,8 +69,8 @@ pub struct Options {
     pub output_frames: Option<usize>,
     /// k of 7.D for [`Mode::Offsets`] and [`Mode::Extend`]: the first and last k frames fixed
     /// while synthesising, then the first k removed, so that the output loops. Default (None):
-    /// [`DEFAULT_FIXED_FRAMES`]. `Some(0)` turns the constraint off (no loop). Refused for
-    /// [`Mode::Loop`], whose loop is 7.A's transition.
+    /// 10 ("k = 10 in our implementation"). `Some(0)` turns the constraint off (no loop).
+    /// Refused for [`Mode::Loop`], whose loop is 7.A's transition.
     pub fixed_frames: Option<usize>,
     /// The most frames of the seam window around the transition of 7.A. Default: 60 (the
     /// paper's "60-frame spatio-temporal window"); shorter clips get a shorter window.
