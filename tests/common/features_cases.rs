@@ -67,12 +67,12 @@ fn a_feature_map_is_detected_edited_and_used() {
         ]),
     )
     .unwrap();
-    // The default, graph-cut placement: no warp, and the feature cost joins the choice once
-    // there is made output to match.
+    // The default, graph-cut placement: it cannot warp and says so, and the feature cost joins
+    // the choice once there is made output to match.
     let mut priced = 0;
     while !again.done() {
         let e = again.step().unwrap();
-        assert_eq!(get(&e, "warp").as_string().unwrap(), "none");
+        assert_eq!(get(&e, "warp").as_string().unwrap(), "unavailable");
         if get(&e, "featureCost").as_f64().unwrap() > 0.0 {
             priced += 1;
         }

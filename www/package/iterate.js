@@ -6,9 +6,14 @@
 // Every exported class with a `step()` method gets them, so a session added in Rust needs nothing
 // here; each module (the single-threaded one, the threaded one) installs them on its own classes.
 
-/** The exported classes of a generated module `lib` that have a `step()` method. */
+/**
+ * The exported classes of a generated module `lib` that have a `step()` method, by their export
+ * names (a bundler's minifier renames the classes themselves).
+ */
 export function sessionClasses(lib) {
-  return Object.values(lib).filter((value) => typeof value === 'function' && /^[A-Z]/.test(value.name) && typeof value.prototype?.step === 'function');
+  return Object.entries(lib)
+    .filter(([name, value]) => /^[A-Z]/.test(name) && typeof value === 'function' && typeof value.prototype?.step === 'function')
+    .map(([, value]) => value);
 }
 
 /** Resolves on the next turn of the event loop, without the 4 ms clamp of nested timeouts. */
