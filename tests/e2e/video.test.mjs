@@ -29,8 +29,11 @@ test('the demo clip loops, with its x-t slice, loop point, playback and WebM', a
   // k of 7.D is off in loop mode (the loop closes through 7.A's transition), on in the others.
   assert.equal(await page.isDisabled('#vt-fixed'), true);
   assert.match(await page.getAttribute('#vt-fixed-label', 'title'), /Off: a loop \(7\.A\)/);
+  assert.equal(await page.isDisabled('#vt-window'), false);
+  assert.equal(await page.isDisabled('#vt-scale'), true);
   await page.selectOption('#vt-mode', 'offsets');
   assert.equal(await page.isDisabled('#vt-fixed'), false);
+  assert.equal(await page.isDisabled('#vt-window'), true);
   await page.selectOption('#vt-mode', 'loop');
 
   await page.click('#step');
@@ -84,5 +87,30 @@ test('the demo clip loops, with its x-t slice, loop point, playback and WebM', a
   await page.waitForSelector('body[data-video-done="true"]', { timeout: 120_000 });
   assert.ok(Number(await page.getAttribute('body', 'data-video-frames')) >= 2);
   await page.screenshot({ path: `${RESULTS}/video-file.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});
+
+test('a spatial extension at 1.5 times the clip, with the gradient cost and its own refinements', async () => {
+  const { page, errors } = demo;
+  await page.selectOption('#vt-source', 'demo');
+  await page.fill('#vt-size', '32');
+  await page.dispatchEvent('#vt-size', 'change');
+  await page.fill('#vt-frames', '12');
+  await page.dispatchEvent('#vt-frames', 'change');
+  await page.selectOption('#vt-mode', 'extend');
+  assert.equal(await page.isDisabled('#vt-scale'), false);
+  await page.selectOption('#vt-scale', '1.5');
+  await page.fill('#vt-out-frames', '8');
+  await page.dispatchEvent('#vt-out-frames', 'change');
+  await page.fill('#vt-fixed', '2');
+  await page.dispatchEvent('#vt-fixed', 'change');
+  await page.fill('#vt-refine', '1');
+  await page.dispatchEvent('#vt-refine', 'change');
+  await page.check('#vt-gradient');
+  await page.click('#run');
+  await page.waitForSelector('body[data-video-done="true"]', { timeout: 120_000 });
+  assert.equal(await page.$eval('#output-canvas', (c) => `${c.width}x${c.height}`), '48x48');
+  assert.equal(await page.getAttribute('body', 'data-video-frames'), '8');
+  await page.screenshot({ path: `${RESULTS}/video-extend.png`, fullPage: true });
   assert.deepEqual(errors, []);
 });

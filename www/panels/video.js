@@ -40,6 +40,14 @@ const OPTIONS_HTML = `
   </select></label>
   <label title="output frames (offsets and extension; a loop is as long as its transition); 0: the default">out frames <input id="vt-out-frames" type="number" value="0" min="0" max="480" step="1"></label>
   <label id="vt-fixed-label" title="${FIXED_TITLE}">k <input id="vt-fixed" type="number" value="10" min="0" max="60" step="1"></label>
+  <label title="a spatial extension's frame size, as a multiple of the clip's (7.E)">extend × <select id="vt-scale">
+    <option value="1.5">1.5</option>
+    <option value="2" selected>2</option>
+    <option value="3">3</option>
+  </select></label>
+  <label title="loop (7.A): the most frames of the seam window around the transition (the paper's 60; short clips get less)">window <input id="vt-window" type="number" value="60" min="3" max="240" step="1"></label>
+  <label title="patches placed over the worst seams once every voxel is covered (section 3.2)">refine <input id="vt-refine" type="number" value="2" min="0" max="50" step="1"></label>
+  <label title="seam cost M′ (eq. 5): the colour difference divided by the gradients, so seams run along edges"><input id="vt-gradient" type="checkbox"> gradient cost M′</label>
   <label class="views" title="the row the x-t slice is taken at">slice row <input id="vt-row" class="view" type="range" min="0" max="63" value="32"></label>
   <label title="the cost surface (at the drawn time shift) and the seam graph (in one frame) of each placement"><input id="vt-anatomy-on" class="view" type="checkbox"> placement anatomy</label>
   <button id="vt-record" type="button" class="view">Record WebM</button>
@@ -175,14 +183,18 @@ export function createPanel(ui) {
       mode,
       placement: ui.$('vt-placement').value,
       seed: ui.seed(),
+      refinementPatches: Math.round(Number(ui.$('vt-refine').value) || 0),
+      gradientCost: ui.$('vt-gradient').checked,
     };
+    if (mode === 'loop') o.transitionWindow = Math.max(3, Math.round(Number(ui.$('vt-window').value) || 60));
     // A loop (7.A) closes through its transition; k of 7.D is for the other modes.
     if (mode !== 'loop') o.fixedFrames = Math.round(Number(ui.$('vt-fixed').value) || 0);
     // A loop is as long as the transition it finds; the other modes take a length.
     if (outFrames > 0 && mode !== 'loop') o.outputFrames = outFrames;
     if (mode === 'extend') {
-      o.outputWidth = 2 * size();
-      o.outputHeight = 2 * size();
+      const scale = Number(ui.$('vt-scale').value);
+      o.outputWidth = Math.round(scale * size());
+      o.outputHeight = Math.round(scale * size());
     }
     return o;
   }
@@ -321,10 +333,13 @@ export function createPanel(ui) {
     title,
     optionsHtml: OPTIONS_HTML,
     sideHtml: SIDE_HTML,
-    ownsOutputSize: "the video's frames take this panel's own size field (a spatial extension is twice it)",
+    ownsOutputSize: "the video's frames take this panel's own size field (a spatial extension is a multiple of it: extend ×)",
     mount() {
+      // Each control is live only in the modes that read it.
       const syncMode = () => {
         const loop = ui.$('vt-mode').value === 'loop';
+        ui.$('vt-window').disabled = !loop;
+        ui.$('vt-scale').disabled = ui.$('vt-mode').value !== 'extend';
         ui.$('vt-fixed').disabled = loop;
         ui.$('vt-fixed-label').title = loop ? `${FIXED_TITLE}. Off: a loop (7.A) closes through its transition` : FIXED_TITLE;
       };
