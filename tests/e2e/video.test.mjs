@@ -57,6 +57,10 @@ test('the demo clip loops, with its x-t slice, loop point, playback and WebM', a
   assert.equal(Number(after), (Number(before) % frames) + 1);
   await page.waitForFunction(() => Number(document.body.dataset.videoPlayed ?? 0) > 3);
   assert.ok(new Set(await canvasPixels(page, 'vt-playback')).size > 20, 'the loop plays');
+  // The cross-fade baseline plays beside it, as long as the output.
+  assert.equal(await page.getAttribute('body', 'data-video-baseline-frames'), String(frames));
+  assert.match(await page.textContent('#vt-crossfade-caption'), /cross-fade loop \(baseline\): \d+ frames, the first \d+ blended/);
+  assert.ok(new Set(await canvasPixels(page, 'vt-crossfade')).size > 20, 'the baseline plays');
 
   await page.click('#vt-record');
   await page.waitForSelector('body[data-recorded-bytes]', { timeout: 60_000 });

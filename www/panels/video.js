@@ -11,6 +11,7 @@ import { clipFromImages, clipFromStrip, clipFromVideo, loadImage } from '../lib/
 import { recordToLink } from '../lib/record.js';
 import { explain } from '../lib/explain.js';
 import { remoteSession } from '../lib/worker.js';
+import { crossfadeLoop, fadeFrames } from '../lib/crossfade.js';
 import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
 
 export const id = 'video';
@@ -66,6 +67,12 @@ const SIDE_HTML = `
     <figure><canvas id="vt-input" width="128" height="128" style="width: 128px; image-rendering: pixelated" aria-label="Input clip, playing"></canvas>
       <figcaption id="vt-input-caption">input clip</figcaption></figure>
   </div>
+  <div class="side-row">
+    <figure><canvas id="vt-crossfade" width="128" height="128" style="width: 128px; image-rendering: pixelated" aria-label="Cross-fade loop of the clip, playing"></canvas>
+      <figcaption id="vt-crossfade-caption">cross-fade loop (baseline)</figcaption></figure>
+    <p class="legend">The baseline: the clip cut to the output's length, its first frames blended with
+      the frames after the cut. Watch the ghosting it leaves where the graph-cut loop cuts instead.</p>
+  </div>
   <figure><canvas id="vt-slice" class="slice" width="128" height="60" style="width: 100%; image-rendering: pixelated" aria-label="x-t slice with seams"></canvas>
     <figcaption id="vt-slice-caption">x-t slice (x across, time down), seams in red</figcaption></figure>
   <div class="side-row">
@@ -84,6 +91,8 @@ export function createPanel(ui) {
   let pending = null;
   let output = [];
   let inputFrames = [];
+  // The cross-fade loop of the clip, as long as the output (www/lib/crossfade.js).
+  let baseline = [];
   let playTimer = null;
   let playIndex = 0;
   let recording = false;
@@ -298,6 +307,12 @@ export function createPanel(ui) {
     for (let t = 0; t < frames; t++) output.push(frameImage(await session.send('frame', t), session.width, session.height));
     ui.$('vt-playback-caption').textContent = `output: ${session.width}×${session.height}, ${frames} frames, looping`;
     document.body.dataset.videoFrames = String(frames);
+    // The baseline: a loop as long as the output, cut from the clip and closed by a cross-fade.
+    baseline = crossfadeLoop(inputFrames, frames);
+    ui.$('vt-crossfade-caption').textContent = baseline.length > 1
+      ? `cross-fade loop (baseline): ${baseline.length} frames, the first ${fadeFrames(baseline.length)} blended`
+      : 'cross-fade loop (baseline): the clip is too short';
+    document.body.dataset.videoBaselineFrames = String(baseline.length);
   }
 
   function startPlayback() {
@@ -307,6 +322,7 @@ export function createPanel(ui) {
       playIndex++;
       if (output.length > 0) show(ui.$('vt-playback'), output[playIndex % output.length]);
       if (inputFrames.length > 0) show(ui.$('vt-input'), inputFrames[playIndex % inputFrames.length]);
+      if (baseline.length > 0) show(ui.$('vt-crossfade'), baseline[playIndex % baseline.length]);
       if (output.length > 0) document.body.dataset.videoPlayed = String(playIndex);
     }, 1000 / PLAYBACK_FPS);
   }
@@ -404,6 +420,7 @@ export function createPanel(ui) {
       pending = null;
       session = null;
       output = [];
+      baseline = [];
       playIndex = 0;
       delete document.body.dataset.videoDone;
       delete document.body.dataset.recordedBytes;
