@@ -252,15 +252,17 @@ export function createPanel(ui) {
     const ctx = canvas.getContext('2d');
     ctx.fillStyle = '#101217';
     ctx.fillRect(0, 0, canvas.width, canvas.height);
-    const [w, h] = [ui.outputWidth(), ui.outputHeight()];
+    const cells = 10;
+    // A drawn flow is evaluated at the arrows alone (one pixel per cell): the whole field of a
+    // large output on every pointer move would hold up the page.
+    const [w, h] = drawn() ? [cells, cells] : [ui.outputWidth(), ui.outputHeight()];
     let field;
     try {
-      field = drawn() ? spec() : flowField(spec(), w, h, t);
+      field = drawn() ? fieldFromStrokes(strokes, w, h, strength()) : flowField(spec(), w, h, t);
     } catch (error) {
       ui.$('fl-arrows-caption').textContent = error.message;
       return;
     }
-    const cells = 10;
     const sx = canvas.width / w;
     const sy = canvas.height / h;
     let max = 1e-6;
