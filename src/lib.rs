@@ -83,6 +83,14 @@ pub mod graphcut {
     pub use crate::methods::graphcut::{Blend, Event, Options, Placement, Session, Transforms};
 }
 
+/// Inpainting and uncrop: a hole filled from the image's known part (or an exemplar) by a
+/// graph-cut fill, then texture optimisation with the known pixels as hard constraints.
+pub mod inpainting {
+    pub use crate::methods::inpainting::{
+        Border, Event, EventKind, Hole, Options, PlacedPatch, Rect, Session, Stage, extend,
+    };
+}
+
 /// Flow-guided texture animation (Kwatra et al. 2005, section 4.1).
 pub mod flow {
     pub use crate::methods::flow::{

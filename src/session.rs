@@ -9,7 +9,7 @@ use crate::methods::design::tileable::TileableEvent;
 use crate::methods::features::{FeatureEvent, FeatureSynthesis};
 use crate::methods::flow::{FlowEvent, FlowSession};
 use crate::methods::graphcut::merge::{Merge, MergeEvent};
-use crate::methods::{graphcut, optimization, video};
+use crate::methods::{graphcut, inpainting, optimization, video};
 
 /// A progressive synthesis: each [`step`](Session::step) is one unit of work a person would want
 /// to see (an EM iteration, a patch placement, a frame), and never blocks for long.
@@ -49,6 +49,26 @@ impl Session for optimization::Session {
 
     fn memory_estimate(&self) -> u64 {
         self.working_set(self.constraints().is_some()).bytes()
+    }
+}
+
+impl Session for inpainting::Session {
+    type Event = inpainting::Event;
+
+    fn step(&mut self) -> Result<Self::Event> {
+        inpainting::Session::step(self)
+    }
+
+    fn is_done(&self) -> bool {
+        inpainting::Session::is_done(self)
+    }
+
+    fn output(&self) -> Result<Image> {
+        inpainting::Session::output(self)
+    }
+
+    fn memory_estimate(&self) -> u64 {
+        inpainting::Session::memory_estimate(self)
     }
 }
 

@@ -4,6 +4,7 @@ pub mod design;
 pub mod features;
 pub mod flow;
 pub mod graphcut;
+pub mod inpainting;
 pub mod optimization;
 pub mod quality;
 pub mod video;

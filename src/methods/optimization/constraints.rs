@@ -13,6 +13,11 @@
 //!   `g (1 + lambda m)`.
 //!
 //! `m` is the mask (0 = free, 1 = fully constrained; fractions soften stroke edges).
+//!
+//! Hard constraints ([`SoftConstraints::hard`], lambda infinite) are the limit of a large
+//! lambda taken exactly: the E-step sets a pixel to `(1 - m) * texture average + m c` (c itself
+//! where m = 1), and the M-step query is left as it is, since the E-step already put c there.
+//! Inpainting holds the known pixels of an image so.
 
 use crate::core::{Error, Image, Result};
 use crate::solvers::nn::FeatureMap;
@@ -65,6 +70,20 @@ impl SoftConstraints {
             mask,
             lambda,
         })
+    }
+
+    /// Hard constraints: the pixels where `mask` is 1 take the target's colour exactly after
+    /// every E-step, fractions blend the texture average with it (see the module's notes).
+    pub fn hard(target: Image, mask: Vec<f32>) -> Result<Self> {
+        let mut constraints = SoftConstraints::new(target, mask, 0.0)?;
+        constraints.lambda = f32::INFINITY;
+        Ok(constraints)
+    }
+
+    /// Whether the constraints are hard (see [`SoftConstraints::hard`]).
+    #[must_use]
+    pub fn is_hard(&self) -> bool {
+        self.lambda == f32::INFINITY
     }
 
     /// The constraint at a level of `width` x `height` (the output, or a coarser level of it).
@@ -214,6 +233,18 @@ impl Constraint {
     pub fn add_to_e_step(&self, colour: &mut [f32], weight: &mut [f32]) {
         let c = self.target.channels();
         let target = self.target.data();
+        if self.lambda == f32::INFINITY {
+            // Hard: colour / weight becomes (1 - m) * average + m * c, the weight unchanged.
+            for (i, (&m, &w)) in self.mask.iter().zip(weight.iter()).enumerate() {
+                if m > 0.0 {
+                    for k in 0..c {
+                        let v = &mut colour[i * c + k];
+                        *v = (1.0 - m) * *v + m * w * target[i * c + k];
+                    }
+                }
+            }
+            return;
+        }
         for (i, (&m, w)) in self.mask.iter().zip(weight.iter_mut()).enumerate() {
             let lm = self.lambda * m;
             if lm > 0.0 {
@@ -236,7 +267,9 @@ impl Constraint {
         let mut pull = vec![0.0f32; target.len()];
         let mut gain = vec![1.0f32; self.mask.len()];
         let mut inverse = vec![1.0f32; self.mask.len()];
-        for (p, &m) in self.mask.iter().enumerate() {
+        // Hard constraints leave the query as it is (the E-step put the target there).
+        let soft = self.lambda.is_finite();
+        for (p, &m) in self.mask.iter().enumerate().filter(|_| soft) {
             let lm = self.lambda * m;
             if lm > 0.0 {
                 gain[p] = 1.0 + lm;

@@ -18,7 +18,9 @@ use crate::core::{Edge, Image, Result, Rng};
 use crate::methods::optimization::e_step::edge;
 use crate::solvers::nn::patches::gaussian_falloff;
 use crate::solvers::nn::patchmatch::QueryGrid;
-use crate::solvers::nn::{FeatureMap, Neighbourhoods, Objective, Pos, Progress, Search};
+use crate::solvers::nn::{
+    FeatureMap, Neighbourhoods, Objective, Penalties, Pos, Progress, Search,
+};
 
 mod carry;
 mod measure;
@@ -143,6 +145,9 @@ pub struct LevelSolver {
     /// This level's exemplar values sorted, for histogram matching, and its scratch space.
     histogram: SortedChannels,
     order: Scratch,
+    /// Exemplar neighbourhoods no match may take (non-zero per top-left corner, `extent().0`
+    /// per row; empty: none), see [`LevelSolver::exclude`].
+    excluded: Vec<f32>,
     /// The M-step under way, between steps of a session that splits iterations.
     running: Option<MStepRun>,
     /// The E-step under way.
@@ -225,6 +230,7 @@ impl LevelSolver {
             order: Scratch::default(),
             running: None,
             summing: None,
+            excluded: Vec::new(),
             setup,
             matcher,
             cols,
@@ -236,6 +242,42 @@ impl LevelSolver {
         };
         solver.refresh_local();
         solver
+    }
+
+    /// Forbids the exemplar neighbourhoods whose top-left corner has a non-zero entry in
+    /// `table` (`extent().0` per row, `extent().1` rows): the searches never move a match there,
+    /// and every match now on one is drawn again among the allowed ones. Inpainting forbids
+    /// the neighbourhoods that reach into the hole, whose pixels are not texture. Fails when
+    /// nothing is allowed.
+    pub fn exclude(&mut self, table: Vec<f32>, rng: &mut Rng) -> Result<()> {
+        let space = self.matcher.space();
+        let (nx, ny) = space.extent();
+        assert!(
+            space.copies() == 1 && table.len() == nx * ny,
+            "one entry per neighbourhood of a plain exemplar"
+        );
+        let allowed: Vec<u32> = (0..table.len() as u32)
+            .filter(|&i| table[i as usize] == 0.0)
+            .collect();
+        if allowed.is_empty() {
+            return Err(crate::core::Error::InvalidParameter {
+                name: "neighbourhoodSizes",
+                reason: format!(
+                    "no {0}x{0} neighbourhood of the exemplar lies outside the excluded pixels",
+                    self.setup.size
+                ),
+            });
+        }
+        for m in &mut self.matches {
+            if table[m.y as usize * nx + m.x as usize] != 0.0 {
+                let i = allowed[rng.index(allowed.len())] as usize;
+                *m = Pos::new(i % nx, i / nx);
+            }
+        }
+        self.excluded = table;
+        self.distances.fill(f32::INFINITY);
+        self.settle();
+        Ok(())
     }
 
     /// The exemplar position of every match (its copy taken off).
@@ -375,6 +417,10 @@ impl LevelSolver {
         let occurrence = run.occurrence.as_ref();
         let objective = Objective {
             penalty: occurrence.map(Occurrence::penalties),
+            excluded: (!self.excluded.is_empty()).then(|| Penalties {
+                values: &self.excluded,
+                columns: space.extent().0,
+            }),
         };
         debug_assert!(
             constraint.is_none() || self.wavelet.is_none(),

@@ -3,6 +3,7 @@
 
 use super::constraints::{Constraint, SoftConstraints};
 use super::e_step::edge;
+use super::exclusion::exclusion_table;
 use super::initial::{Start, graphcut_start_options, random_patches};
 pub use super::iteration::Phase;
 use super::iteration::{Iteration, StepBudget, Work};
@@ -13,7 +14,7 @@ use super::options::{Energy, Options};
 use super::schedule::{Level, plan};
 use crate::core::budget::WorkingSet;
 use crate::core::pyramid::gaussian_pyramid;
-use crate::core::sample::resize_bilinear;
+use crate::core::sample::{resize_bilinear, shrink_area};
 use crate::core::{Edge, Error, Image, Result, Rng};
 use crate::methods::graphcut;
 use crate::solvers::nn::Pos;
@@ -108,6 +109,11 @@ pub struct Session {
     /// The graph-cut start's working set, when the options ask for one: it is live before any
     /// level's buffers are, so the session's peak is the larger of the two.
     start_set: Option<WorkingSet>,
+    /// A start the caller gave at the output's size ([`Session::start_from`]), used instead of
+    /// the options' start.
+    given_start: Option<Image>,
+    /// Exemplar pixels no match may use ([`Session::exclude_exemplar`]), full resolution.
+    excluded: Option<Vec<bool>>,
 }
 
 impl Session {
@@ -147,6 +153,8 @@ impl Session {
         Ok(Session {
             start: None,
             start_set,
+            given_start: None,
+            excluded: None,
             run: Iteration::default(),
             new_level: false,
             budget: StepBudget::for_pixels(options.output_width * options.output_height),
@@ -218,6 +226,69 @@ impl Session {
             self.level = self.levels.len() - 1;
             self.iteration = 0;
         }
+        Ok(())
+    }
+
+    /// Starts the coarsest level from `image` (the output's size and the exemplar's channels,
+    /// shrunk to the level by area averaging) instead of the options' start. Only before the
+    /// first step.
+    pub fn start_from(&mut self, image: Image) -> Result<()> {
+        let (w, h) = (self.options.output_width, self.options.output_height);
+        if (image.width(), image.height()) != (w, h) {
+            return Err(Error::InvalidSize {
+                what: "start",
+                width: image.width(),
+                height: image.height(),
+                reason: format!("must match the output size {w}x{h}"),
+            });
+        }
+        if image.channels() != self.exemplar_channels() {
+            return Err(Error::UnsupportedChannels(image.channels()));
+        }
+        if self.entered.is_some() {
+            return Err(Error::InvalidParameter {
+                name: "start",
+                reason: "can only be given before the first step".into(),
+            });
+        }
+        self.given_start = Some(image);
+        self.start_set = None;
+        Ok(())
+    }
+
+    /// Forbids every exemplar neighbourhood that holds a pixel where `mask` (one entry per
+    /// exemplar pixel, true = excluded) is set, at every level (see `super::exclusion`). Only
+    /// before the first step; fails when a level would have no neighbourhood left.
+    pub fn exclude_exemplar(&mut self, mask: Vec<bool>) -> Result<()> {
+        let e = &self.exemplars[0];
+        if mask.len() != e.width() * e.height() {
+            return Err(Error::LengthMismatch {
+                what: "exemplar exclusion mask",
+                expected: e.width() * e.height(),
+                actual: mask.len(),
+            });
+        }
+        if self.entered.is_some() {
+            return Err(Error::InvalidParameter {
+                name: "exclude",
+                reason: "can only be given before the first step".into(),
+            });
+        }
+        let size = (e.width(), e.height());
+        for lv in &self.levels {
+            if !exclusion_table(&mask, size, lv.octave, lv.size).contains(&0.0) {
+                return Err(Error::InvalidParameter {
+                    name: "neighbourhoodSizes",
+                    reason: format!(
+                        "no {0}x{0} neighbourhood of the exemplar at 1/{1} resolution lies \
+                         outside the excluded pixels",
+                        lv.size,
+                        1 << lv.octave
+                    ),
+                });
+            }
+        }
+        self.excluded = mask.contains(&true).then_some(mask);
         Ok(())
     }
 
@@ -477,6 +548,11 @@ impl Session {
             );
             solver.carry_from(old, |cx, cy| (cx * ox, cy * oy), scale);
         }
+        if let Some(mask) = &self.excluded {
+            let e = &self.exemplars[0];
+            let table = exclusion_table(mask, (e.width(), e.height()), lv.octave, lv.size);
+            solver.exclude(table, &mut self.rng)?;
+        }
         if let Some(out) = self.output.take() {
             self.output = Some(fit_output(out, &setup)?);
         }
@@ -499,8 +575,17 @@ impl Session {
         let solver = self.solver.as_mut().expect("level entered");
         if self.run.idle() {
             if self.output.is_none() {
-                // The coarsest level's start (see [`super::initial`]).
+                // The coarsest level's start (see [`super::initial`]), or the caller's.
+                let given = self.given_start.as_ref();
                 let start = match self.options.start {
+                    _ if given.is_some() => {
+                        let given = given.expect("matched");
+                        if (given.width(), given.height()) == (lv.output_width, lv.output_height) {
+                            given.clone()
+                        } else {
+                            shrink_area(given, lv.output_width, lv.output_height)?
+                        }
+                    }
                     Start::Patches => random_patches(
                         exemplar,
                         lv.output_width,

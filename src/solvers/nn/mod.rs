@@ -197,6 +197,10 @@ impl Progress {
 pub struct Objective<'a> {
     /// A cost added for a candidate, whatever the query.
     pub penalty: Option<Penalties<'a>>,
+    /// Candidates the search may not take: an infinite cost where the table is not 0 (for
+    /// example exemplar neighbourhoods that reach into a hole being filled). A search only
+    /// moves a match to a cheaper candidate, so a match that starts allowed stays allowed.
+    pub excluded: Option<Penalties<'a>>,
 }
 
 /// A cost per candidate position, `columns` per row: a table rather than a closure, so that the
@@ -217,13 +221,22 @@ impl Penalties<'_> {
 }
 
 impl Objective<'_> {
+    /// The cost of candidate `pos` before any distance: its penalty, infinite when excluded.
+    #[inline]
+    fn extra(&self, pos: Pos) -> f32 {
+        if self.excluded.is_some_and(|e| e.at(pos) != 0.0) {
+            return f32::INFINITY;
+        }
+        self.penalty.map_or(0.0, |p| p.at(pos))
+    }
+
     /// The cost of `pos` for `query`; stops early (returning a value above `bound`) as soon as
     /// it exceeds `bound`.
     #[inline]
     #[must_use]
     pub fn cost(&self, space: &Neighbourhoods, query: &Query, pos: Pos, bound: f32) -> f32 {
-        let extra = self.penalty.map_or(0.0, |p| p.at(pos));
-        if extra > bound {
+        let extra = self.extra(pos);
+        if extra > bound || extra == f32::INFINITY {
             return extra;
         }
         extra + query.distance(space, pos, bound - extra)
@@ -239,8 +252,8 @@ impl Objective<'_> {
         pos: Pos,
         bound: f32,
     ) -> f32 {
-        let extra = self.penalty.map_or(0.0, |p| p.at(pos));
-        if extra > bound {
+        let extra = self.extra(pos);
+        if extra > bound || extra == f32::INFINITY {
             return extra;
         }
         extra + space.distance_in_place(query, space.weights(), pos, bound - extra)
