@@ -207,7 +207,7 @@ impl Session {
             iterations: options.iterations,
             r: options.r,
             search: options.search,
-            completeness: 0.0,
+            completeness: options.completeness,
             histogram_matching: options.histogram_matching,
             start: Start::Patches,
             memory_budget_mib: options.memory_budget_mib,
