@@ -9,6 +9,7 @@ mod exemplar;
 mod features;
 mod flow;
 mod graphcut;
+mod inpainting;
 mod layers;
 mod merge;
 mod object;
@@ -27,6 +28,7 @@ pub use exemplar::Exemplar;
 pub use features::{FeatureMap, FeatureSynthesis, detect_features, measure_broken_features};
 pub use flow::{FlowAnimation, flow_field};
 pub use graphcut::GraphcutTextures;
+pub use inpainting::{Inpainting, extend_border};
 pub use layers::LayerDesign;
 pub use merge::GraphcutMerge;
 pub use optimization::TextureOptimization;
@@ -52,6 +54,7 @@ pub fn schema() -> js_sys::Array {
     [
         &optimization::SCHEMA,
         &graphcut::SCHEMA,
+        &inpainting::SCHEMA,
         &merge::SCHEMA,
         &flow::SCHEMA,
         &flow::COMPONENT_SCHEMA,

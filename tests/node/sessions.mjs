@@ -79,6 +79,14 @@ export const SESSIONS = {
       tileable: BOOL, memoryBudgetMiB: BUDGET,
     },
   },
+  Inpainting: {
+    make: (o, input = ex()) => new api.Inpainting(input, squareMask(input.width, input.height), over({ patchSize: 8, neighbourhoodSizes: [8, 4], iterations: 1 }, o)),
+    options: {
+      seed: SEED, patchSize: COUNT, k: REAL, levels: COUNT, neighbourhoodSizes: COUNTS, iterations: COUNT, r: REAL,
+      search: enumOf('patchmatch', 'kmeans-tree', 'exact'), histogramMatching: REAL, completeness: REAL,
+      optimize: BOOL, memoryBudgetMiB: BUDGET,
+    },
+  },
   VideoTextures: {
     make: (o, input = tinyClip()) => new api.VideoTextures(input, over({ transitionWindow: 4, refinementPatches: 0 }, o)),
     options: {

@@ -3,7 +3,9 @@
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { basename, extname, join } from 'node:path';
 import { parseArgs } from 'node:util';
-import { Exemplar, FeatureSynthesis, FlowAnimation, GraphcutTextures, TextureOptimization, measureQuality, version } from './node.js';
+import {
+  Exemplar, FeatureSynthesis, FlowAnimation, GraphcutTextures, Inpainting, TextureOptimization, extendBorder, measureQuality, version,
+} from './node.js';
 
 const HELP = `texsynth-wasm ${version()}: texture synthesis from the command line
 
@@ -20,6 +22,10 @@ Usage:
   texsynth-wasm animate IN.png -o DIR [--flow vortex|sink|source|shear|translation]
       [--strength S] [--frames N] [--size WxH] [--seed N] [--set key=value]
       writes DIR/frame-0001.png ... (flow-guided animation, Kwatra et al. 2005 section 4.1)
+  texsynth-wasm inpaint IN.png --mask MASK.png -o OUT.png [--exemplar EX.png] [--seed N] [--set key=value]
+      fills the hole (mask pixels that are not black) from the rest of the image, or from EX
+  texsynth-wasm uncrop IN.png --border N|TOP,RIGHT,BOTTOM,LEFT -o OUT.png [--seed N] [--set key=value]
+      extends the image by a border of that many pixels, filled like a hole
   texsynth-wasm measure EXEMPLAR.png OUTPUT.png
       prints coherence, completeness, histogram and flat (lower is better)
 
@@ -234,6 +240,52 @@ async function animate(positionals, values) {
   if (!values.json) process.stderr.write(`wrote ${written} frames to ${values.output}\n`);
 }
 
+/** Runs an inpainting of `image` over `mask` to the end and writes it to `-o`. */
+function fill(image, mask, values, label) {
+  const options = { seed: parseInt10(values.seed ?? '1', '--seed'), ...parseSets(values.set) };
+  const exemplar = values.exemplar ? readExemplar(values.exemplar) : null;
+  const session = exemplar ? Inpainting.withExemplar(image, mask, exemplar, options) : new Inpainting(image, mask, options);
+  const bar = progress(label);
+  for (const event of session) {
+    if (values.json) process.stdout.write(JSON.stringify(event) + '\n');
+    const fraction = event.stage === 'fill' ? (0.5 * event.pixelsFilled) / event.holePixels : 0.5 + (0.5 * ((event.level ?? 0) + 1)) / (event.levelCount || 1);
+    bar.update(event.done ? 1 : fraction, event.kind);
+  }
+  bar.end();
+  const rgba = new Uint8ClampedArray(session.width * session.height * 4);
+  session.renderInto(rgba);
+  writePng(values.output, rgba, session.width, session.height);
+  session.free();
+  if (!values.json) process.stderr.write(`wrote ${values.output}\n`);
+}
+
+function inpaint(positionals, values) {
+  if (positionals.length !== 1) throw new UsageError('inpaint needs exactly one input image');
+  if (!values.mask) throw new UsageError('inpaint needs --mask MASK.png');
+  if (!values.output) throw new UsageError('inpaint needs -o OUT.png');
+  const image = readExemplar(positionals[0]);
+  const maskImage = readExemplar(values.mask);
+  if (maskImage.width !== image.width || maskImage.height !== image.height) {
+    throw new Error(`the mask ${values.mask} is ${maskImage.width}x${maskImage.height}, the image ${image.width}x${image.height}`);
+  }
+  // A pixel that is not black marks the hole (alpha is ignored).
+  const rgba = maskImage.toRgba();
+  const mask = new Uint8Array(image.width * image.height);
+  for (let i = 0; i < mask.length; i++) mask[i] = rgba[i * 4] || rgba[i * 4 + 1] || rgba[i * 4 + 2] ? 1 : 0;
+  fill(image, mask, values, 'inpaint');
+}
+
+function uncrop(positionals, values) {
+  if (positionals.length !== 1) throw new UsageError('uncrop needs exactly one input image');
+  if (!values.border) throw new UsageError('uncrop needs --border N or --border TOP,RIGHT,BOTTOM,LEFT');
+  if (!values.output) throw new UsageError('uncrop needs -o OUT.png');
+  const widths = values.border.split(',').map((w) => parseInt10(w, '--border'));
+  if (widths.length !== 1 && widths.length !== 4) throw new UsageError(`--border takes N or TOP,RIGHT,BOTTOM,LEFT (got '${values.border}')`);
+  const [top, right, bottom, left] = widths.length === 1 ? [widths[0], widths[0], widths[0], widths[0]] : widths;
+  const { image, mask } = extendBorder(readExemplar(positionals[0]), { top, right, bottom, left });
+  fill(image, mask, values, 'uncrop');
+}
+
 function measure(positionals, values) {
   if (positionals.length !== 2) throw new UsageError('measure needs EXEMPLAR.png OUTPUT.png');
   const exemplar = readExemplar(positionals[0]);
@@ -259,6 +311,9 @@ async function main(argv) {
         set: { type: 'string', multiple: true },
         flow: { type: 'string' },
         strength: { type: 'string' },
+        mask: { type: 'string' },
+        exemplar: { type: 'string' },
+        border: { type: 'string' },
         frames: { type: 'string' },
         jobs: { type: 'string', short: 'j' },
         json: { type: 'boolean' },
@@ -273,9 +328,10 @@ async function main(argv) {
   if (values.help) return process.stdout.write(HELP);
   if (values.version) return process.stdout.write(`${version()}\n`);
   const [command, ...rest] = positionals;
-  const commands = { synth, animate, measure };
-  if (!command) fail('no command given: synth, animate or measure (see --help)', 2);
-  if (!commands[command]) fail(`unknown command '${command}': synth, animate or measure (see --help)`, 2);
+  const commands = { synth, animate, inpaint, uncrop, measure };
+  const names = 'synth, animate, inpaint, uncrop or measure';
+  if (!command) fail(`no command given: ${names} (see --help)`, 2);
+  if (!commands[command]) fail(`unknown command '${command}': ${names} (see --help)`, 2);
   try {
     await commands[command](rest, values);
   } catch (error) {

@@ -11,7 +11,7 @@ import type {
   GraphcutMergeOptions, GraphcutMergeEvent, FlowComponent, FlowAnimationOptions, FlowAnimationEvent,
   DeformationRanges, TileableOptions, TileableEvent, TextureBrushOptions, BrushStroke, LayerDesignOptions,
   LayerDesignEvent, DetectFeaturesOptions, FeatureSynthesisOptions, FeatureSynthesisEvent,
-  VideoTexturesOptions, VideoTexturesEvent,
+  VideoTexturesOptions, VideoTexturesEvent, InpaintingOptions, InpaintingEvent,
 } from './schema.js';
 // Every option object and event interface, generated from the bindings' tables.
 export type * from './schema.js';
@@ -270,6 +270,50 @@ export class GraphcutMerge implements Steppable<GraphcutMergeEvent> {
   readonly width: number;
   readonly height: number;
 }
+
+// ---------------------------------------------------------------- inpainting and uncrop
+
+/**
+ * Fills a hole in an image (Kwatra et al. 2003's graph cut from the outside in, then Kwatra et
+ * al. 2005's texture optimisation with the known pixels as hard constraints); pixels outside
+ * the hole are never changed. Uncrop: `extendBorder`, then this session.
+ */
+export class Inpainting implements Steppable<InpaintingEvent> {
+  /**
+   * Fills the pixels of `image` where `mask` (one byte per pixel) is non-zero, from the rest of
+   * the image.
+   * @throws {TexsynthError} a mask of the wrong size, an empty or a full mask, unknown option
+   * keys, impossible values.
+   */
+  constructor(image: Exemplar, mask: Bytes, options?: InpaintingOptions);
+  /** Like the constructor, filling from `exemplar` instead of the image's known part. */
+  static withExemplar(image: Exemplar, mask: Bytes, exemplar: Exemplar, options?: InpaintingOptions): Inpainting;
+  /** The part of the image worked on: the hole's bounds and a margin. */
+  readonly region: Rect;
+  /** The estimated peak working set in bytes (what the memory budget is checked against). */
+  readonly memoryEstimate: number;
+  free(): void;
+  [Symbol.dispose](): void;
+  [Symbol.iterator](): Iterator<InpaintingEvent>;
+  run(options?: RunOptions<InpaintingEvent>): Promise<InpaintingEvent | null>;
+  /** Places one patch of the fill, or runs one EM iteration (or part of one) of the optimisation. */
+  step(): InpaintingEvent;
+  /** The image: the known pixels exactly as given, the hole as filled so far. */
+  renderInto(target: RgbaTarget): void;
+  /** The fill's patches, each in its own colour; known pixels grey, unfilled ones transparent. */
+  renderPatchesInto(target: RgbaTarget): void;
+  readonly done: boolean;
+  readonly width: number;
+  readonly height: number;
+}
+
+/** A border's widths in pixels: one number for all four sides, or per side (missing sides: 0). */
+export type Border = number | { top?: number; right?: number; bottom?: number; left?: number };
+/**
+ * Uncrop's input: `image` inside a border of `border` pixels, and the mask that marks the
+ * border as the hole, for `new Inpainting(image, mask, options)`.
+ */
+export function extendBorder(image: Exemplar, border: Border): { image: Exemplar; mask: Uint8Array };
 
 // ---------------------------------------------------------------- flow animation
 

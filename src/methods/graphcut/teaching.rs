@@ -47,11 +47,16 @@ pub fn label_map(canvas: &Canvas) -> Vec<u8> {
             if l == UNCOVERED {
                 return [0, 0, 0, 0];
             }
-            let hue = (l as f32 * 0.618_034).fract();
-            let [r, g, b] = hsv(hue, 0.65, 0.95);
+            let [r, g, b] = label_colour(l);
             [r, g, b, 255]
         })
         .collect()
+}
+
+/// The colour of patch `label` in label maps (golden-ratio hues, so neighbours differ).
+#[must_use]
+pub fn label_colour(label: u32) -> [u8; 3] {
+    hsv((label as f32 * 0.618_034).fract(), 0.65, 0.95)
 }
 
 fn hsv(h: f32, s: f32, v: f32) -> [u8; 3] {

@@ -198,12 +198,12 @@ impl Session {
         exemplar: Option<&Image>,
         options: &Options,
     ) -> Result<optimization::Session> {
-        let settings = |levels: usize| optimization::Options {
+        let settings = |levels: usize, sizes: &[usize]| optimization::Options {
             output_width: region.width,
             output_height: region.height,
             seed: options.seed,
             levels,
-            neighbourhood_sizes: options.neighbourhood_sizes.clone(),
+            neighbourhood_sizes: sizes.to_vec(),
             iterations: options.iterations,
             r: options.r,
             search: options.search,
@@ -213,21 +213,27 @@ impl Session {
             memory_budget_mib: options.memory_budget_mib,
             ..optimization::Options::default()
         };
+        let (levels, sizes) = (options.levels, &options.neighbourhood_sizes);
         let mut session = match exemplar {
-            Some(e) => optimization::Session::new(e, settings(options.levels))?,
+            Some(e) => optimization::Session::new(e, settings(levels, sizes))?,
             None => {
                 let around = region.grown(SOURCE_REACH, image.width(), image.height());
                 let source = image.crop(around.x, around.y, around.width, around.height)?;
                 let excluded = hole.within(around);
-                // Coarse levels shrink the known part around a large hole faster than the
-                // hole: levels are dropped, coarsest first, while one has no neighbourhood
-                // outside the hole.
-                let mut levels = options.levels;
+                // Coarse levels and large neighbourhoods find no neighbourhood outside a large
+                // hole in a small image: levels are dropped, coarsest first, then the largest
+                // sizes, while one has none.
+                let mut sizes = sizes.clone();
+                sizes.sort_unstable_by(|a, b| b.cmp(a));
+                let mut levels = levels;
                 loop {
-                    let mut session = optimization::Session::new(&source, settings(levels))?;
+                    let mut session = optimization::Session::new(&source, settings(levels, &sizes))?;
                     match session.exclude_exemplar(excluded.clone()) {
                         Ok(()) => break session,
                         Err(_) if levels > 1 => levels -= 1,
+                        Err(_) if sizes.len() > 1 => {
+                            sizes.remove(0);
+                        }
                         Err(e) => return Err(e),
                     }
                 }
