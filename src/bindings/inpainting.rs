@@ -41,8 +41,8 @@ pub(crate) const SCHEMA: Schema = Schema {
                 min: 0,
                 max: 1 << 20,
             },
-            default: Some("2"),
-            doc: "Resolution levels of the texture optimisation (coarse levels where the hole leaves no neighbourhood outside it are dropped).",
+            default: Some("1"),
+            doc: "Resolution levels of the texture optimisation; more break up the structure the fill laid (coarse levels where the hole leaves no neighbourhood outside it are dropped).",
         },
         Opt {
             key: "neighbourhoodSizes",
@@ -76,7 +76,7 @@ pub(crate) const SCHEMA: Schema = Schema {
         number(
             "histogramMatching",
             Some("1"),
-            "How far the filled pixels' colour histogram is matched to the exemplar's (0..1); the known pixels never move.",
+            "How far the filled pixels' colour histogram is matched to that of the known pixels around the hole (0..1); the known pixels never move.",
         ),
         number(
             "completeness",

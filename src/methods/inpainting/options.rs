@@ -17,7 +17,9 @@ pub struct Options {
     /// Randomness k of the fill's source choice, probability exp(-C / (k sigma^2)) (Kwatra et
     /// al. 2003, eq. 3). Default: 0.01, graph cut's.
     pub k: f32,
-    /// Resolution levels of the texture optimisation that follows. Default: 2.
+    /// Resolution levels of the texture optimisation that follows. Default: 1 (with two
+    /// neighbourhood sizes): the fill has laid the structure, and coarser levels break it up
+    /// again (a wall's window continued by the fill came out as scattered frame pieces).
     pub levels: usize,
     /// Its neighbourhood widths, largest first. Default: [16, 8].
     pub neighbourhood_sizes: Vec<usize>,
@@ -27,9 +29,11 @@ pub struct Options {
     pub r: f32,
     /// Its nearest-neighbourhood search. Default: PatchMatch.
     pub search: Search,
-    /// How far each E-step moves the filled pixels to the exemplar's colour histogram (0 to 1;
-    /// the known pixels are not moved). Without it EM averages the hole's neighbourhoods into
-    /// the exemplar's smooth areas (a 40% hole in paving_128 turns flat). Default: 1.
+    /// How far each E-step moves the filled pixels to the colour histogram of the known pixels
+    /// around the hole (0 to 1; the known pixels are not moved). Without it EM averages the
+    /// hole's neighbourhoods into the exemplar's smooth areas (a 40% hole in paving_128 turns
+    /// flat); against the whole image's histogram, a wall's windows are pressed into the hole
+    /// as bright fragments. Default: 1.
     pub histogram_matching: f32,
     /// Weight of the occurrence penalty that spreads the hole's matches over the exemplar (see
     /// texture optimisation's `completeness`). Default: 1.
@@ -47,7 +51,7 @@ impl Default for Options {
             seed: 1,
             patch_size: 32,
             k: 0.01,
-            levels: 2,
+            levels: 1,
             neighbourhood_sizes: vec![16, 8],
             iterations: 5,
             r: 0.8,

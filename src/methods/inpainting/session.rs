@@ -241,6 +241,7 @@ impl Session {
         };
         let mask = known.iter().map(|&k| f32::from(u8::from(k))).collect();
         session.set_constraints(Some(SoftConstraints::hard(crop, mask)?))?;
+        session.match_histogram_to_constraint(true);
         Ok(session)
     }
 

@@ -64,13 +64,34 @@ impl SortedChannels {
     /// takes seconds at each level's start, for quantiles that a million samples give as well).
     #[must_use]
     pub fn new(exemplar: &Image) -> Self {
-        let c = exemplar.channels();
-        let pixels = exemplar.width() * exemplar.height();
+        Self::of_pixels(exemplar, None)
+    }
+
+    /// The quantiles of the pixels of `image` where `keep` is true (every pixel with `None`),
+    /// subsampled like [`SortedChannels::new`]. Inpainting matches the hole to the known pixels
+    /// around it so, not to the whole exemplar: a wall's windows are not in the hole's share.
+    #[must_use]
+    pub fn of_pixels(image: &Image, keep: Option<&[bool]>) -> Self {
+        let c = image.channels();
+        let kept: Vec<f32>;
+        let data = match keep {
+            None => image.data(),
+            Some(keep) => {
+                kept = image
+                    .data()
+                    .chunks_exact(c)
+                    .zip(keep)
+                    .filter(|(_, k)| **k)
+                    .flat_map(|(p, _)| p.iter().copied())
+                    .collect();
+                &kept
+            }
+        };
+        let pixels = data.len() / c;
         let every = pixels.div_ceil(MAX_QUANTILE_PIXELS).max(1);
         let channels = (0..c)
             .map(|k| {
-                let mut v: Vec<f32> = exemplar
-                    .data()
+                let mut v: Vec<f32> = data
                     .iter()
                     .skip(k)
                     .step_by(c * every)

@@ -244,6 +244,11 @@ impl LevelSolver {
         solver
     }
 
+    /// Matches the E-step's histograms to `reference` instead of this level's exemplar.
+    pub fn set_histogram_reference(&mut self, reference: SortedChannels) {
+        self.histogram = reference;
+    }
+
     /// Forbids the exemplar neighbourhoods whose top-left corner has a non-zero entry in
     /// `table` (`extent().0` per row, `extent().1` rows): the searches never move a match there,
     /// and every match now on one is drawn again among the allowed ones. Inpainting forbids

@@ -4,6 +4,7 @@
 use super::constraints::{Constraint, SoftConstraints};
 use super::e_step::edge;
 use super::exclusion::exclusion_table;
+use super::histogram::SortedChannels;
 use super::initial::{Start, graphcut_start_options, random_patches};
 pub use super::iteration::Phase;
 use super::iteration::{Iteration, StepBudget, Work};
@@ -114,6 +115,9 @@ pub struct Session {
     given_start: Option<Image>,
     /// Exemplar pixels no match may use ([`Session::exclude_exemplar`]), full resolution.
     excluded: Option<Vec<bool>>,
+    /// Whether histogram matching takes the constraint's fully held pixels as its reference
+    /// ([`Session::match_histogram_to_constraint`]).
+    histogram_to_constraint: bool,
 }
 
 impl Session {
@@ -155,6 +159,7 @@ impl Session {
             start_set,
             given_start: None,
             excluded: None,
+            histogram_to_constraint: false,
             run: Iteration::default(),
             new_level: false,
             budget: StepBudget::for_pixels(options.output_width * options.output_height),
@@ -290,6 +295,14 @@ impl Session {
         }
         self.excluded = mask.contains(&true).then_some(mask);
         Ok(())
+    }
+
+    /// Makes histogram matching move the free pixels towards the colours of the constraint's
+    /// fully held pixels at each level (mask 1) instead of the exemplar's. Inpainting holds the
+    /// known pixels so: the hole takes the statistics of its surroundings, not of the whole
+    /// image, whose other objects (a wall's windows) would otherwise be pressed into it.
+    pub fn match_histogram_to_constraint(&mut self, on: bool) {
+        self.histogram_to_constraint = on;
     }
 
     /// Sets whether iterations split over steps and how long such a step works (None: whole
@@ -559,9 +572,15 @@ impl Session {
         self.fresh = self.output.is_some();
         self.new_level = true;
         self.run = Iteration::default();
-        self.solver = Some(solver);
         self.entered = Some(self.level);
         self.constraint = self.level_constraint();
+        if let Some(c) = self.constraint.as_ref().filter(|_| self.histogram_to_constraint) {
+            let held: Vec<bool> = c.mask.iter().map(|&m| m >= 1.0).collect();
+            if held.contains(&true) {
+                solver.set_histogram_reference(SortedChannels::of_pixels(&c.target, Some(&held)));
+            }
+        }
+        self.solver = Some(solver);
         Ok(())
     }
 
