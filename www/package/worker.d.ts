@@ -4,7 +4,7 @@ import type {
   GraphcutTexturesOptions, LayerDesignEvent, LayerDesignOptions, TextureBrushOptions,
   TextureOptimizationEvent, TextureOptimizationOptions, TileableEvent, TileableOptions,
   FeatureSynthesisEvent, FeatureSynthesisOptions, VideoTexturesEvent, VideoTexturesOptions,
-  DetectFeaturesOptions,
+  DetectFeaturesOptions, InpaintingEvent, InpaintingOptions,
 } from './index.js';
 
 /** A video clip to send to a worker: the frames' RGBA one after the other; it becomes a VideoClip. */
@@ -28,6 +28,9 @@ export interface SessionKinds {
   /** A static constructor: the map argument is a FeatureMap made in the same worker (or its mirror). */
   'FeatureSynthesis.withFeatureMap': { args: [ExemplarInput, WorkerSession<'FeatureMap'>, FeatureSynthesisOptions?]; event: FeatureSynthesisEvent };
   VideoTextures: { args: [ClipInput, VideoTexturesOptions?]; event: VideoTexturesEvent };
+  /** `mask`: one byte per image pixel, non-zero to fill. */
+  Inpainting: { args: [ExemplarInput, Uint8Array, InpaintingOptions?]; event: InpaintingEvent };
+  'Inpainting.withExemplar': { args: [ExemplarInput, Uint8Array, ExemplarInput, InpaintingOptions?]; event: InpaintingEvent };
 }
 export type SessionKind = keyof SessionKinds;
 
@@ -35,7 +38,7 @@ export type SessionKind = keyof SessionKinds;
 export interface WorkerImage { data: Uint8ClampedArray; width: number; height: number }
 
 /** A view method of the session that writes RGBA into a buffer. */
-export type RenderMethod = 'renderInto' | 'renderOffsetMapInto' | 'renderSeamsInto' | 'renderSeamCostInto' | 'renderLabelsInto' | 'renderNaiveInto' | 'renderSourcesInto' | 'renderFeaturesInto';
+export type RenderMethod = 'renderInto' | 'renderOffsetMapInto' | 'renderSeamsInto' | 'renderSeamCostInto' | 'renderLabelsInto' | 'renderNaiveInto' | 'renderSourcesInto' | 'renderFeaturesInto' | 'renderPatchesInto';
 
 export interface WorkerRunOptions<E> {
   /** Aborting pauses the session after the current step; `run` rejects with the signal's reason. */
