@@ -65,6 +65,7 @@ layer!(solvers);
 
 pub use crate::core::{Error, Image, Result, decode, encode_png, from_rgba8, to_rgba8};
 pub use crate::methods::quality::{Quality, quality};
+pub use crate::methods::transfer::SourceMap;
 pub use crate::session::Session;
 
 /// Texture optimisation (Kwatra et al. 2005): EM over overlapping neighbourhoods, multi-level,

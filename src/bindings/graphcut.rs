@@ -326,6 +326,18 @@ impl GraphcutTextures {
         self.carried_broken_of(map.mask(), "map")
     }
 
+    /// Material sets: `other` (an image of the exemplar's size: a normal, height or roughness
+    /// map) re-indexed by this output's source map, written as RGBA into `target` (output
+    /// size). Every output pixel copies the pixel of `other` that the output shows of the
+    /// exemplar, so the maps line up with the output and nothing is averaged (normals stay
+    /// unit vectors). Uncovered pixels are transparent black. A session with rotated, mirrored
+    /// or scaled sources is refused.
+    #[wasm_bindgen(js_name = transferInto)]
+    pub fn transfer_into(&self, other: &Exemplar, target: &Uint8ClampedArray) -> JsResult<()> {
+        let map = self.session.source_map()?;
+        render_into(&map.transfer(other.image())?, target)
+    }
+
     /// Seam pixels opaque red, the rest transparent (to draw over the image).
     #[wasm_bindgen(js_name = renderSeamsInto)]
     pub fn render_seams_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {

@@ -324,6 +324,18 @@ impl TextureOptimization {
         })
     }
 
+    /// Material sets: `other` (an image of the exemplar's size: a normal, height or roughness
+    /// map) re-indexed by this output's source map, written as RGBA into `target` (output
+    /// size): each output pixel copies the pixel of `other` under the match of the
+    /// neighbourhood whose centre is nearest. Nothing is averaged, so normals stay unit
+    /// vectors; the output itself averages neighbourhoods, so transfer the albedo too for maps
+    /// that match pixel for pixel. Throws before the finest level has run.
+    #[wasm_bindgen(js_name = transferInto)]
+    pub fn transfer_into(&self, other: &Exemplar, target: &Uint8ClampedArray) -> JsResult<()> {
+        let map = self.session.source_map()?;
+        render_into(&map.transfer(other.image())?, target)
+    }
+
     /// The search in use: 'patchmatch', 'kmeans-tree' or 'exact'.
     #[wasm_bindgen(getter)]
     pub fn search(&self) -> String {

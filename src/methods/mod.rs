@@ -7,4 +7,7 @@ pub mod graphcut;
 pub mod inpainting;
 pub mod optimization;
 pub mod quality;
+pub mod transfer;
+#[cfg(test)]
+mod transfer_tests;
 pub mod video;

@@ -131,6 +131,12 @@ export class TextureOptimization implements Steppable<TextureOptimizationEvent> 
   /** Runs one EM iteration. */
   step(): TextureOptimizationEvent;
   /** Writes the current output as RGBA8 into `target` (`width * height * 4` long). */
+  /**
+   * Material sets: `other` (an image of the exemplar's size: a normal, height or roughness map)
+   * re-indexed by the output's source map into `target` (output size, RGBA). Nothing is
+   * averaged, so normals stay unit vectors.
+   */
+  transferInto(other: Exemplar, target: RgbaTarget): void;
   renderInto(target: RgbaTarget): void;
   /** The colour-coded offset map (red = exemplar x, green = exemplar y). */
   renderOffsetMapInto(target: RgbaTarget): void;
@@ -194,6 +200,12 @@ export class GraphcutTextures implements Steppable<GraphcutTexturesEvent> {
   run(options?: RunOptions<GraphcutTexturesEvent>): Promise<GraphcutTexturesEvent | null>;
   /** Places one patch. */
   step(): GraphcutTexturesEvent;
+  /**
+   * Material sets: `other` (an image of the exemplar's size: a normal, height or roughness map)
+   * re-indexed by the output's source map into `target` (output size, RGBA). Nothing is
+   * averaged, so normals stay unit vectors.
+   */
+  transferInto(other: Exemplar, target: RgbaTarget): void;
   renderInto(target: RgbaTarget): void;
   /** The label map: every patch in its own colour. */
   renderLabelsInto(target: RgbaTarget): void;

@@ -7,7 +7,8 @@ use super::canvas::Patch;
 use super::options::{Blend, Options};
 use super::region::{Candidate, Region};
 use super::synthesis::Synthesis;
-use crate::core::{Image, Result};
+use crate::core::{Error, Image, Result};
+use crate::methods::transfer::SourceMap;
 
 /// What a step did.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -207,6 +208,34 @@ impl Session {
         }
         self.last = Some(event);
         Ok(event)
+    }
+
+    /// The exemplar pixel each output pixel shows (see `crate::methods::transfer`): exact, from
+    /// the labels and the patches' offsets; pixels no patch covered yet have none. Only for a
+    /// session of the exemplar alone (no rotated, mirrored or scaled sources, whose pixels are
+    /// not the exemplar's).
+    pub fn source_map(&self) -> Result<SourceMap> {
+        let s = &self.synthesis;
+        if s.sources.len() != 1 {
+            return Err(Error::InvalidParameter {
+                name: "transfer",
+                reason: format!(
+                    "needs a session of the exemplar alone; this one has {} sources (rotations, \
+                     mirrors or scales)",
+                    s.sources.len()
+                ),
+            });
+        }
+        let (w, h) = (s.canvas.width, s.canvas.height);
+        let source = &s.sources[0];
+        SourceMap::new(
+            (w, h),
+            (source.width(), source.height()),
+            (0..w * h).map(|i| {
+                s.patch_of(i)
+                    .and_then(|p| s.source_coords(p, i % w, i / w))
+            }),
+        )
     }
 
     /// The output with the chosen blending applied.

@@ -18,6 +18,7 @@ use crate::core::pyramid::gaussian_pyramid;
 use crate::core::sample::{resize_bilinear, shrink_area};
 use crate::core::{Edge, Error, Image, Result, Rng};
 use crate::methods::graphcut;
+use crate::methods::transfer::SourceMap;
 use crate::solvers::nn::Pos;
 
 /// What a step did.
@@ -662,6 +663,59 @@ impl Session {
             rng: &mut self.rng,
         };
         Ok(self.run.advance(work, self.budget))
+    }
+
+    /// The exemplar pixel each output pixel shows (see `crate::methods::transfer`): the pixel
+    /// of the match of the node whose neighbourhood centre is nearest (the first such node in
+    /// the grid's order among equals), at the offset of the pixel in that neighbourhood. The
+    /// output itself averages every neighbourhood over the pixel, so transferring the exemplar
+    /// gives an image close to the output, not equal to it. Only at full resolution: before
+    /// the finest level is entered it fails.
+    pub fn source_map(&self) -> Result<SourceMap> {
+        let not_yet = || Error::InvalidParameter {
+            name: "transfer",
+            reason: "the source map is made at full resolution: step until the finest level \
+                     has run"
+                .into(),
+        };
+        let solver = self.solver.as_ref().ok_or_else(not_yet)?;
+        let level = self.levels[self.entered.ok_or_else(not_yet)?];
+        if level.octave != 0 || self.output.is_none() {
+            return Err(not_yet());
+        }
+        let (w, h) = (level.output_width, level.output_height);
+        let (cols, rows) = solver.grid();
+        let (size, wrap) = (level.size, self.options.tileable);
+        // Per axis: the node whose neighbourhood holds the pixel with its centre nearest.
+        let nearest = |corners: &[usize], len: usize| -> Vec<(usize, usize)> {
+            (0..len)
+                .map(|p| {
+                    let mut best = (usize::MAX, 0, 0);
+                    for (j, &c) in corners.iter().enumerate() {
+                        let offset = if wrap { (p + len - c) % len } else { p.wrapping_sub(c) };
+                        if offset < size {
+                            let distance = offset.abs_diff(size / 2);
+                            if distance < best.0 {
+                                best = (distance, j, offset);
+                            }
+                        }
+                    }
+                    (best.1, best.2)
+                })
+                .collect()
+        };
+        let (along_x, along_y) = (nearest(cols, w), nearest(rows, h));
+        let matches = solver.matches();
+        let e = &self.exemplars[0];
+        SourceMap::new(
+            (w, h),
+            (e.width(), e.height()),
+            (0..w * h).map(|i| {
+                let ((col, dx), (row, dy)) = (along_x[i % w], along_y[i / w]);
+                let m = matches[row * cols.len() + col];
+                Some((m.x as usize + dx, m.y as usize + dy))
+            }),
+        )
     }
 
     /// The soft-constraint energy of the current output (0 without constraints): the mean
