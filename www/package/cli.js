@@ -17,6 +17,9 @@ Usage:
       --tileable                       make the output tile seamlessly
       --set key=value                  any session option, repeatable (e.g. --set search=exact,
                                        --set placement=sub-patch); values are JSON or strings
+      --transfer MAP.png:OUT-MAP.png   a map of the input's size (normal, height, roughness)
+                                       carried along with the output (repeatable; optimization
+                                       and graphcut)
       With several inputs or seeds, OUT may contain {name} and {seed}; otherwise
       "-NAME-sSEED" is added before the extension.
   texsynth-wasm animate IN.png -o DIR [--flow vortex|sink|source|shear|translation]
@@ -155,6 +158,14 @@ async function synth(positionals, values) {
   const options = { ...parseSize(values.size ?? '256x256'), ...parseSets(values.set) };
   if (values.tileable) options.tileable = true;
   const jobs = parseInt10(values.jobs ?? '1', '--jobs') || 1;
+  const transfers = (values.transfer ?? []).map((pair) => {
+    const colon = pair.lastIndexOf(':');
+    if (colon <= 0 || colon === pair.length - 1) throw new UsageError(`--transfer wants MAP.png:OUT.png (got '${pair}')`);
+    return { from: pair.slice(0, colon), to: pair.slice(colon + 1) };
+  });
+  if (transfers.length && method === 'features') throw new UsageError('--transfer works with --method optimization or graphcut');
+  if (transfers.length && jobs > 1) throw new UsageError('--transfer runs with --jobs 1');
+  const maps = new Map(transfers.map((t) => [t.from, readExemplar(t.from)]));
   const tasks = [];
   for (const input of positionals) for (const seed of seeds) tasks.push({ input, seed });
   const many = tasks.length > 1;
@@ -176,9 +187,18 @@ async function synth(positionals, values) {
       session.renderInto(rgba);
       const out = outputPath(values.output, basename(task.input, extname(task.input)), task.seed, many);
       writePng(out, rgba, session.width, session.height);
+      const written = [out];
+      for (const t of transfers) {
+        session.transferInto(maps.get(t.from), rgba);
+        const to = outputPath(t.to, basename(task.input, extname(task.input)), task.seed, many);
+        writePng(to, rgba, session.width, session.height);
+        written.push(to);
+      }
       session.free();
-      if (!values.json) process.stderr.write(`wrote ${out}\n`);
-      else process.stdout.write(JSON.stringify({ kind: 'written', path: out }) + '\n');
+      for (const path of written) {
+        if (!values.json) process.stderr.write(`wrote ${path}\n`);
+        else process.stdout.write(JSON.stringify({ kind: 'written', path }) + '\n');
+      }
     }
     return;
   }
@@ -314,6 +334,7 @@ async function main(argv) {
         mask: { type: 'string' },
         exemplar: { type: 'string' },
         border: { type: 'string' },
+        transfer: { type: 'string', multiple: true },
         frames: { type: 'string' },
         jobs: { type: 'string', short: 'j' },
         json: { type: 'boolean' },
