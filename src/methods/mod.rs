@@ -7,6 +7,8 @@ pub mod graphcut;
 pub mod inpainting;
 pub mod optimization;
 pub mod quality;
+#[cfg(test)]
+mod several_tests;
 pub mod transfer;
 #[cfg(test)]
 mod transfer_tests;

@@ -72,6 +72,23 @@ impl Session {
         })
     }
 
+    /// A session whose patches come from any of `exemplars` (see
+    /// [`Synthesis::with_exemplars`]).
+    pub fn with_exemplars(exemplars: &[Image], options: Options) -> Result<Session> {
+        Ok(Session::from_synthesis(Synthesis::with_exemplars(
+            exemplars, options,
+        )?))
+    }
+
+    /// Which exemplar each output pixel shows (`None` where no patch covered it yet).
+    #[must_use]
+    pub fn exemplar_map(&self) -> Vec<Option<u32>> {
+        let s = &self.synthesis;
+        (0..s.canvas.width * s.canvas.height)
+            .map(|i| s.patch_of(i).map(|p| s.sources[p.source as usize].exemplar))
+            .collect()
+    }
+
     /// A session over a synthesis set up by the caller (e.g. with sources of its own).
     #[must_use]
     pub fn from_synthesis(synthesis: Synthesis) -> Session {

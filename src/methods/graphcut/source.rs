@@ -17,6 +17,8 @@ pub struct Source {
     pub scale: f32,
     /// What this source is, for the teaching views ("exemplar", "rotate 90", "scale 0.5", ...).
     pub name: String,
+    /// Which of the synthesis's exemplars it comes from (0 with one exemplar).
+    pub exemplar: u32,
 }
 
 impl Source {
@@ -35,6 +37,7 @@ impl Source {
             image,
             scale,
             name: name.into(),
+            exemplar: 0,
         }
     }
 

@@ -43,9 +43,39 @@ pub struct Synthesis {
 }
 
 impl Synthesis {
+    /// A synthesis of `exemplar` (and its transformed versions, as the options say).
     pub fn new(exemplar: &Image, options: Options) -> Result<Synthesis> {
-        options.validate(exemplar.width(), exemplar.height())?;
-        let sources = build_sources(exemplar, &options.transforms)?;
+        Self::with_exemplars(std::slice::from_ref(exemplar), options)
+    }
+
+    /// A synthesis whose patches come from any of `exemplars` (each with its transformed
+    /// versions): the placement's candidates range over all of them, and each patch knows its
+    /// source and so its exemplar ([`Source::exemplar`]). Exemplars with fewer channels are
+    /// widened to the most any has (grey to RGB, an alpha of 1 added).
+    pub fn with_exemplars(exemplars: &[Image], options: Options) -> Result<Synthesis> {
+        let Some(first) = exemplars.first() else {
+            return Err(crate::core::Error::InvalidParameter {
+                name: "exemplars",
+                reason: "give at least one exemplar".into(),
+            });
+        };
+        let channels = exemplars.iter().map(Image::channels).max().unwrap_or(1);
+        let mut sources = Vec::new();
+        let mut values = Vec::new();
+        for (k, exemplar) in exemplars.iter().enumerate() {
+            let exemplar = exemplar.with_channels(channels)?;
+            options.validate(exemplar.width(), exemplar.height())?;
+            for mut source in build_sources(&exemplar, &options.transforms)? {
+                source.exemplar = k as u32;
+                if exemplars.len() > 1 {
+                    source.name = format!("exemplar {} {}", k + 1, source.name)
+                        .replace(" exemplar", "");
+                }
+                sources.push(source);
+            }
+            values.extend_from_slice(exemplar.data());
+        }
+        let exemplar = first.with_channels(channels)?;
         // The budget is checked before the canvas, the largest buffer, is allocated.
         let (w, h) = (options.output_width, options.output_height);
         working_set(&options, &sources, exemplar.channels()).check(
@@ -61,7 +91,7 @@ impl Synthesis {
         )?;
         let synthesis = Synthesis {
             rng: Rng::new(options.seed),
-            sigma: value_sigma(exemplar.data()),
+            sigma: value_sigma(&values),
             options,
             sources,
             canvas,

@@ -5,6 +5,7 @@
 
 pub mod constraints;
 pub mod e_step;
+pub mod exemplars;
 pub mod exclusion;
 pub mod features;
 pub mod histogram;

@@ -102,6 +102,32 @@ pub fn fallback_size(sizes: &[usize], exemplar_side: usize, output_side: usize) 
         .min()
 }
 
+/// For every position `0..len` along one axis of the grid whose neighbourhoods start at
+/// `corners` and are `size` wide: the index of the neighbourhood that holds the position with
+/// its centre nearest (the first among equals), and the position's offset in it.
+#[must_use]
+pub fn nearest_nodes(corners: &[usize], len: usize, size: usize, wrap: bool) -> Vec<(usize, usize)> {
+    (0..len)
+        .map(|p| {
+            let mut best = (usize::MAX, 0, 0);
+            for (j, &c) in corners.iter().enumerate() {
+                let offset = if wrap {
+                    (p + len - c) % len
+                } else {
+                    p.wrapping_sub(c)
+                };
+                if offset < size {
+                    let distance = offset.abs_diff(size / 2);
+                    if distance < best.0 {
+                        best = (distance, j, offset);
+                    }
+                }
+            }
+            (best.1, best.2)
+        })
+        .collect()
+}
+
 /// Positions (top-left corners, along one axis of length `len`) of the neighbourhood grid X†:
 /// every `spacing` pixels from 0. Without wrapping, a last corner at `len - size` makes the grid
 /// cover the border; with wrapping, corners run up to `len` and neighbourhoods wrap around.

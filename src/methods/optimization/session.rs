@@ -1,7 +1,11 @@
 //! The texture-optimisation session (Kwatra et al. 2005, Algorithm 1 with sections 3.1 and 3.2):
 //! a state machine whose `step()` runs one EM iteration of the planned schedule.
 
+mod maps;
+mod several;
+
 use super::constraints::{Constraint, SoftConstraints};
+use several::Several;
 use super::e_step::edge;
 use super::exclusion::exclusion_table;
 use super::histogram::SortedChannels;
@@ -18,7 +22,6 @@ use crate::core::pyramid::gaussian_pyramid;
 use crate::core::sample::{resize_bilinear, shrink_area};
 use crate::core::{Edge, Error, Image, Result, Rng};
 use crate::methods::graphcut;
-use crate::methods::transfer::SourceMap;
 use crate::solvers::nn::Pos;
 
 /// What a step did.
@@ -119,6 +122,8 @@ pub struct Session {
     /// Whether histogram matching takes the constraint's fully held pixels as its reference
     /// ([`Session::match_histogram_to_constraint`]).
     histogram_to_constraint: bool,
+    /// With several exemplars ([`Session::with_exemplars`]): the stack and each one's pyramid.
+    several: Option<Several>,
 }
 
 impl Session {
@@ -126,6 +131,11 @@ impl Session {
     pub fn new(exemplar: &Image, options: Options) -> Result<Session> {
         options.validate(exemplar.width(), exemplar.height())?;
         let levels = plan(exemplar.width(), exemplar.height(), &options)?;
+        Self::build(exemplar, options, levels)
+    }
+
+    /// A session over `exemplar` with the schedule `levels`, the options checked.
+    fn build(exemplar: &Image, options: Options, levels: Vec<Level>) -> Result<Session> {
         let dims = (exemplar.width(), exemplar.height(), exemplar.channels());
         let (w, h) = (options.output_width, options.output_height);
         working_set(&options, &levels, dims, false).check(
@@ -161,6 +171,7 @@ impl Session {
             given_start: None,
             excluded: None,
             histogram_to_constraint: false,
+            several: None,
             run: Iteration::default(),
             new_level: false,
             budget: StepBudget::for_pixels(options.output_width * options.output_height),
@@ -575,6 +586,11 @@ impl Session {
         self.run = Iteration::default();
         self.entered = Some(self.level);
         self.constraint = self.level_constraint();
+        if let Some(several) = &self.several {
+            let keep = several.kept_at(lv.octave);
+            let reference = SortedChannels::of_pixels(&self.exemplars[lv.octave], Some(&keep));
+            solver.set_histogram_reference(reference);
+        }
         if let Some(c) = self.constraint.as_ref().filter(|_| self.histogram_to_constraint) {
             let held: Vec<bool> = c.mask.iter().map(|&m| m >= 1.0).collect();
             if held.contains(&true) {
@@ -607,7 +623,7 @@ impl Session {
                         }
                     }
                     Start::Patches => random_patches(
-                        exemplar,
+                        self.several.as_ref().map_or(exemplar, |s| &s.pyramids[0][lv.octave]),
                         lv.output_width,
                         lv.output_height,
                         lv.size,
@@ -617,16 +633,23 @@ impl Session {
                         let started = crate::core::clock::now_ms();
                         let cut = match &mut self.start {
                             Some(cut) => cut,
-                            None => self.start.insert(graphcut::Session::new(
-                                exemplar,
-                                graphcut_start_options(
+                            None => {
+                                let options = graphcut_start_options(
                                     lv.output_width,
                                     lv.output_height,
                                     self.options.tileable,
                                     self.options.memory_budget_mib,
                                     &mut self.rng,
-                                ),
-                            )?),
+                                );
+                                let cut = match &self.several {
+                                    None => graphcut::Session::new(exemplar, options)?,
+                                    Some(s) => graphcut::Session::with_exemplars(
+                                        &s.at_octave(lv.octave),
+                                        options,
+                                    )?,
+                                };
+                                self.start.insert(cut)
+                            }
                         };
                         // Whole graph-cut steps, so that where a large start splits changes
                         // nothing.
@@ -663,59 +686,6 @@ impl Session {
             rng: &mut self.rng,
         };
         Ok(self.run.advance(work, self.budget))
-    }
-
-    /// The exemplar pixel each output pixel shows (see `crate::methods::transfer`): the pixel
-    /// of the match of the node whose neighbourhood centre is nearest (the first such node in
-    /// the grid's order among equals), at the offset of the pixel in that neighbourhood. The
-    /// output itself averages every neighbourhood over the pixel, so transferring the exemplar
-    /// gives an image close to the output, not equal to it. Only at full resolution: before
-    /// the finest level is entered it fails.
-    pub fn source_map(&self) -> Result<SourceMap> {
-        let not_yet = || Error::InvalidParameter {
-            name: "transfer",
-            reason: "the source map is made at full resolution: step until the finest level \
-                     has run"
-                .into(),
-        };
-        let solver = self.solver.as_ref().ok_or_else(not_yet)?;
-        let level = self.levels[self.entered.ok_or_else(not_yet)?];
-        if level.octave != 0 || self.output.is_none() {
-            return Err(not_yet());
-        }
-        let (w, h) = (level.output_width, level.output_height);
-        let (cols, rows) = solver.grid();
-        let (size, wrap) = (level.size, self.options.tileable);
-        // Per axis: the node whose neighbourhood holds the pixel with its centre nearest.
-        let nearest = |corners: &[usize], len: usize| -> Vec<(usize, usize)> {
-            (0..len)
-                .map(|p| {
-                    let mut best = (usize::MAX, 0, 0);
-                    for (j, &c) in corners.iter().enumerate() {
-                        let offset = if wrap { (p + len - c) % len } else { p.wrapping_sub(c) };
-                        if offset < size {
-                            let distance = offset.abs_diff(size / 2);
-                            if distance < best.0 {
-                                best = (distance, j, offset);
-                            }
-                        }
-                    }
-                    (best.1, best.2)
-                })
-                .collect()
-        };
-        let (along_x, along_y) = (nearest(cols, w), nearest(rows, h));
-        let matches = solver.matches();
-        let e = &self.exemplars[0];
-        SourceMap::new(
-            (w, h),
-            (e.width(), e.height()),
-            (0..w * h).map(|i| {
-                let ((col, dx), (row, dy)) = (along_x[i % w], along_y[i / w]);
-                let m = matches[row * cols.len() + col];
-                Some((m.x as usize + dx, m.y as usize + dy))
-            }),
-        )
     }
 
     /// The soft-constraint energy of the current output (0 without constraints): the mean
