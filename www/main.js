@@ -20,11 +20,12 @@ import * as design from './panels/design.js';
 import * as features from './panels/features.js';
 import * as flow from './panels/flow.js';
 import * as graphcut from './panels/graphcut.js';
+import * as inpainting from './panels/inpainting.js';
 import * as merge from './panels/merge.js';
 import * as optimization from './panels/optimization.js';
 import * as video from './panels/video.js';
 
-const PANELS = [optimization, graphcut, merge, flow, design, features, video, compare];
+const PANELS = [optimization, graphcut, merge, flow, design, features, video, inpainting, compare];
 const $ = (id) => document.getElementById(id);
 
 function showError(message) {

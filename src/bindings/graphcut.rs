@@ -8,6 +8,7 @@ use wasm_bindgen::prelude::*;
 use super::anatomy::{costs_object, graph_object};
 use super::error::JsResult;
 use super::exemplar::Exemplar;
+use super::exemplars::{ExemplarList, sources_view};
 use super::features::FeatureMap;
 use super::options::{OptionsReader, object};
 use super::pixels::{render_into, write_rgba};
@@ -252,6 +253,7 @@ fn event_object(e: &Event) -> JsResult<JsValue> {
 #[wasm_bindgen]
 pub struct GraphcutTextures {
     session: Session,
+    exemplars: ExemplarList,
 }
 
 js_session!(GraphcutTextures);
@@ -259,6 +261,7 @@ js_session!(GraphcutTextures);
 /// One patch placement per step.
 impl JsSession for GraphcutTextures {
     fn step_event(&mut self) -> JsResult<JsValue> {
+        self.exemplars.stepped();
         event_object(&self.session.step()?)
     }
 
@@ -289,7 +292,31 @@ impl GraphcutTextures {
         let options = read_options(&options)?;
         Ok(GraphcutTextures {
             session: Session::new(exemplar.image(), options)?,
+            exemplars: ExemplarList::new(exemplar.image()),
         })
+    }
+
+    /// Adds an exemplar patches may come from (before the first step; with its own rotations,
+    /// mirrors and scales when the options ask for them). Returns its index, as
+    /// `renderSourcesInto` colours it.
+    #[wasm_bindgen(js_name = addExemplar)]
+    pub fn add_exemplar(&mut self, exemplar: &Exemplar) -> JsResult<u32> {
+        let list = self.exemplars.with(exemplar.image())?;
+        let options = self.session.synthesis().options.clone();
+        self.session = Session::with_exemplars(&list, options)?;
+        Ok(self.exemplars.keep(list))
+    }
+
+    /// Which exemplar each output pixel comes from, each in its own colour (as `addExemplar`
+    /// numbers them); transparent where no patch covered the pixel yet.
+    #[wasm_bindgen(js_name = renderSourcesInto)]
+    pub fn render_sources_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        let canvas = &self.session.synthesis().canvas;
+        let size = (canvas.width, canvas.height);
+        write_rgba(
+            &sources_view(&self.session.exemplar_map(), size, size),
+            target,
+        )
     }
 
     /// The broken-feature count on this output's carried feature map: every made pixel carries

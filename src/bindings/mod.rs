@@ -6,6 +6,7 @@ mod brush;
 mod design;
 mod error;
 mod exemplar;
+mod exemplars;
 mod features;
 mod flow;
 mod graphcut;

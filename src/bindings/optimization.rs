@@ -7,8 +7,9 @@ use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
 use super::exemplar::Exemplar;
+use super::exemplars::{ExemplarList, sources_view};
 use super::options::{OptionsReader, object};
-use super::pixels::render_into;
+use super::pixels::{render_into, write_rgba};
 use super::schema::{
     DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field, output_size,
 };
@@ -280,6 +281,7 @@ pub(crate) fn phase_name(phase: Phase) -> &'static str {
 #[wasm_bindgen]
 pub struct TextureOptimization {
     session: Session,
+    exemplars: ExemplarList,
 }
 
 js_session!(TextureOptimization);
@@ -288,6 +290,7 @@ js_session!(TextureOptimization);
 /// over several steps of kind 'part' so that none blocks for long; see the event table).
 impl JsSession for TextureOptimization {
     fn step_event(&mut self) -> JsResult<JsValue> {
+        self.exemplars.stepped();
         event_object(&self.session.step()?)
     }
 
@@ -321,7 +324,38 @@ impl TextureOptimization {
         let options = read_options(&options)?;
         Ok(TextureOptimization {
             session: Session::new(exemplar.image(), options)?,
+            exemplars: ExemplarList::new(exemplar.image()),
         })
+    }
+
+    /// Adds an exemplar the matches may come from (before the first step; the session is
+    /// planned again over all of them, for the smallest, and keeps its soft constraints).
+    /// Returns its index, as `renderSourcesInto` colours it.
+    #[wasm_bindgen(js_name = addExemplar)]
+    pub fn add_exemplar(&mut self, exemplar: &Exemplar) -> JsResult<u32> {
+        let list = self.exemplars.with(exemplar.image())?;
+        let mut session = Session::with_exemplars(&list, self.session.options().clone())?;
+        session.set_constraints(self.session.constraints().cloned())?;
+        self.session = session;
+        Ok(self.exemplars.keep(list))
+    }
+
+    /// Which exemplar each output pixel's nearest match lies in, each in its own colour (as
+    /// `addExemplar` numbers them; one colour with one exemplar), at the current level
+    /// up-sampled; transparent before the first step.
+    #[wasm_bindgen(js_name = renderSourcesInto)]
+    pub fn render_sources_into(&self, target: &Uint8ClampedArray) -> JsResult<()> {
+        let o = self.session.options();
+        let (w, h) = (o.output_width, o.output_height);
+        let rgba = match self.session.exemplar_map() {
+            Some(map) => {
+                let level = self.session.current_level();
+                let map: Vec<Option<u32>> = map.into_iter().map(Some).collect();
+                sources_view(&map, (level.output_width, level.output_height), (w, h))
+            }
+            None => vec![0; w * h * 4],
+        };
+        write_rgba(&rgba, target)
     }
 
     /// Material sets: `other` (an image of the exemplar's size: a normal, height or roughness

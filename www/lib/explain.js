@@ -102,6 +102,26 @@ export const EXPLANATIONS = {
     text: 'A spatio-temporal patch at a random offset (section 7, B. Random Temporal Offsets, or a random spatial one): there is no cost surface to show, only its seam surface, the minimum cut of a graph over 6-connected voxels, shown in the frame of the patch with the most overlap.',
     cite: [KWATRA_2003, 'section 7 (B. Random Temporal Offsets) and section 3 (the graph, Figure 2)', 'the paragraph "B. Random Temporal Offsets: For very short sequences of video..."'],
   },
+  'ip-start': {
+    text: 'Fill a hole: paint over what should go (an object, a scratch, a corner), then Step. The hole is filled from the rest of the image in two passes: a graph-cut fill, patch by patch from the outside in, with the known pixels held by constraint arcs, then texture optimisation over the hole with the known pixels as hard constraints. Pixels outside the hole never change.',
+    cite: [KWATRA_2003, 'section 3 (constraint arcs, Figure 2) and section 4; then Kwatra et al. 2005, section 4 (constrained synthesis)', 'the paragraph "Consider the graph shown in Figure 2(right)..." on constraint arcs'],
+  },
+  'ip-uncrop': {
+    text: 'Uncrop: the image is put inside a new border, and the border is the hole. The same fill grows the texture outwards from the image\'s edges, then texture optimisation smooths what it laid, the image itself held fixed.',
+    cite: [KWATRA_2003, 'section 3 (constraint arcs) and section 4, Patch Placement & Matching', 'the paragraph "Consider the graph shown in Figure 2(right)..." on constraint arcs'],
+  },
+  'ip-fill': {
+    text: 'A fill patch: it is centred on the hole\'s front where its window holds the most known or filled pixels, so the fill grows inwards from where most is known. Its source window is drawn with probability exp(−C/(kσ²)) (eq. 3) from the SSD C over the overlap (eq. 2, by FFT, section 5), and the minimum cut lays it in: known pixels are tied to the old side by infinite constraint arcs, unfilled ones must take the patch, and old seams are remembered (section 3.1).',
+    cite: [KWATRA_2003, 'sections 3 and 3.1 (the seam graph, constraint arcs, old seams), section 4 (equations (2) and (3)) and section 5 (FFT search)', 'the paragraph "Consider the graph shown in Figure 2(right) that has one node per pixel in the overlap region..."'],
+  },
+  'ip-optimization': {
+    text: 'Texture optimisation over the hole and a margin of known pixels, started from the fill: the M-step matches every neighbourhood to one of the image outside the hole, the E-step averages them, and the known pixels are hard constraints (the soft constraints of section 4 with λ taken to infinity). The energy falls as the fill\'s seams are smoothed.',
+    cite: [KWATRA_2005, 'section 3 (the E- and M-steps, energy (1)) and section 4 (controllable synthesis, Algorithm 2)', 'the paragraph "The M-step of our algorithm minimizes (1) with respect to the set of input neighborhoods..."'],
+  },
+  'ip-done': {
+    text: 'Done: every hole pixel is filled, and every other pixel is exactly the input\'s. Toggle fill patches to see which patch each filled pixel came from; the energy plot shows what the optimisation changed after the fill.',
+    cite: [KWATRA_2003, 'section 3 (constraint arcs) and section 6, Image Synthesis', 'the Image Synthesis section and Figure 6'],
+  },
   'ds-deform': {
     text: 'Global deformation: the texture is rotated, scaled, mirrored or flipped as a whole, then re-synthesised by energy optimization so that it stays seamless.',
     cite: [SHEN_2009, 'section 3.1, Algorithm overview', 'the paragraph "Our interactive scheme allows the texture designer..."'],

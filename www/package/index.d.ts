@@ -136,6 +136,13 @@ export class TextureOptimization implements Steppable<TextureOptimizationEvent> 
    * re-indexed by the output's source map into `target` (output size, RGBA). Nothing is
    * averaged, so normals stay unit vectors.
    */
+  /**
+   * Adds an exemplar the matches may come from, before the first step; returns its index.
+   * @throws {TexsynthError} after the first step, or an exemplar the options refuse.
+   */
+  addExemplar(exemplar: Exemplar): number;
+  /** Which exemplar each output pixel comes from, each in its own colour (`addExemplar`'s index). */
+  renderSourcesInto(target: RgbaTarget): void;
   transferInto(other: Exemplar, target: RgbaTarget): void;
   renderInto(target: RgbaTarget): void;
   /** The colour-coded offset map (red = exemplar x, green = exemplar y). */
@@ -205,6 +212,13 @@ export class GraphcutTextures implements Steppable<GraphcutTexturesEvent> {
    * re-indexed by the output's source map into `target` (output size, RGBA). Nothing is
    * averaged, so normals stay unit vectors.
    */
+  /**
+   * Adds an exemplar the patches may come from, before the first step; returns its index.
+   * @throws {TexsynthError} after the first step, or an exemplar the options refuse.
+   */
+  addExemplar(exemplar: Exemplar): number;
+  /** Which exemplar each output pixel comes from, each in its own colour (`addExemplar`'s index). */
+  renderSourcesInto(target: RgbaTarget): void;
   transferInto(other: Exemplar, target: RgbaTarget): void;
   renderInto(target: RgbaTarget): void;
   /** The label map: every patch in its own colour. */

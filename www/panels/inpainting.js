@@ -39,6 +39,10 @@ const OPTIONS_HTML = `
 const SIDE_HTML = `
   <div class="readout" id="ip-readout"></div>
   <div class="explain" id="ip-explain" data-history-text aria-live="polite"></div>
+  <figure class="ip-before">
+    <canvas id="ip-before" width="1" height="1" aria-label="The input with the hole to fill"></canvas>
+    <figcaption>The input, with what is to be filled in pink: compare it with the result.</figcaption>
+  </figure>
   <canvas id="ip-energy" class="plot" width="296" height="170" aria-label="Energy of the optimisation per iteration"></canvas>
   <p class="legend">Pink: still to fill. Orange outline: the patch just placed; dashed: the region the
   session works on (the hole and a margin of known pixels). <em>fill patches</em> shows each patch of
@@ -131,7 +135,18 @@ export function createPanel(ui) {
     energyLevels = [];
   }
 
+  /** The input with its hole tinted, on the output canvas and, to compare the result with, on
+   * the side's small copy. */
   function drawPreview() {
+    paintPreview();
+    const canvas = ui.outputCanvas;
+    const before = ui.$('ip-before');
+    before.width = canvas.width;
+    before.height = canvas.height;
+    before.getContext('2d').drawImage(canvas, 0, 0);
+  }
+
+  function paintPreview() {
     const canvas = ui.outputCanvas;
     const exemplar = ui.exemplar();
     if (!exemplar) return;
@@ -160,8 +175,8 @@ export function createPanel(ui) {
       canvas.getContext('2d').putImageData(patches, 0, 0);
     } else {
       drawInto(canvas, session);
-      if (!session.done && lastEvent?.stage === 'fill') drawHole(canvas, width, height, sessionMask, patches);
     }
+    if (!session.done && lastEvent?.stage === 'fill') drawHole(canvas, width, height, sessionMask, patches);
     if (session.done || !lastEvent) return;
     const region = session.getter('region');
     if (region) outline(canvas, region, width, height, '#7fd1ff', [4, 3]);
@@ -180,7 +195,7 @@ export function createPanel(ui) {
     energyLevels.forEach((level, i) => {
       if (i === 0 || energyLevels[i - 1] !== level) markers.push({ index: i, label: `level ${level + 1}` });
     });
-    const title = ui.$('ip-optimize').checked ? PLOT_TITLE : `${PLOT_TITLE} (optimisation off)`;
+    const title = ui.$('ip-optimize').checked ? PLOT_TITLE : 'optimisation off: no energy to plot';
     drawLinePlot(ui.$('ip-energy'), energies, { markers, title });
   }
 
@@ -254,7 +269,7 @@ export function createPanel(ui) {
     mount() {
       const canvas = ui.outputCanvas;
       canvas.onpointerdown = (event) => {
-        if (mode() !== 'fill' || !hole) return;
+        if (mode() !== 'fill' || !hole || event.button !== 0) return;
         // New paint starts over, as Reset does: the run so far filled another hole.
         if (session || pending) ui.$('reset').click();
         painting = true;
@@ -288,7 +303,7 @@ export function createPanel(ui) {
       extended = null;
       const canvas = ui.outputCanvas;
       canvas.onpointerdown = canvas.onpointermove = null;
-      canvas.style.cursor = '';
+      canvas.style.cursor = canvas.style.touchAction = '';
       window.removeEventListener('pointerup', this.onPointerUp);
       unpaintable(canvas);
     },
@@ -329,16 +344,19 @@ export function createPanel(ui) {
       ui.$('ip-brush-tools').hidden = !filling;
       ui.$('ip-border-tools').hidden = filling;
       const canvas = ui.outputCanvas;
-      if (filling) {
-        paintable(canvas, 'Paint the hole to fill');
-        canvas.style.cursor = 'crosshair';
-      } else {
-        unpaintable(canvas);
-        canvas.style.cursor = '';
-      }
+      // Painting takes the pointer: a finger paints rather than scrolls the page.
+      if (filling) paintable(canvas, 'Paint the hole to fill');
+      else unpaintable(canvas);
+      canvas.style.cursor = filling ? 'crosshair' : '';
+      canvas.style.touchAction = filling ? 'none' : '';
       if (!filling && exemplar) makeExtended();
+      if (filling) {
+        extended?.image.free();
+        extended = null;
+      }
       for (const key of ['inpaintingDone', 'inpaintingStage', 'inpaintingPatches', 'inpaintingFilled']) delete document.body.dataset[key];
-      document.body.dataset.holePixels = String(filling ? hole?.pixels ?? 0 : extended ? extended.mask.reduce((n, m) => n + (m ? 1 : 0), 0) : 0);
+      const marked = filling ? hole?.pixels : extended?.mask.reduce((n, m) => n + (m ? 1 : 0), 0);
+      document.body.dataset.holePixels = String(marked ?? 0);
       ui.$('ip-download').disabled = true;
       ui.$('ip-readout').textContent = previewReadout();
       explain(ui.$('ip-explain'), filling ? 'ip-start' : 'ip-uncrop');
