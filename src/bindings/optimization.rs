@@ -333,11 +333,35 @@ impl TextureOptimization {
     /// Returns its index, as `renderSourcesInto` colours it.
     #[wasm_bindgen(js_name = addExemplar)]
     pub fn add_exemplar(&mut self, exemplar: &Exemplar) -> JsResult<u32> {
+        if self.session.has_guides() {
+            return Err(Error::InvalidParameter {
+                name: "addExemplar",
+                reason: "guides need a session of one exemplar; this one has guides".into(),
+            }
+            .into());
+        }
         let list = self.exemplars.with(exemplar.image())?;
         let mut session = Session::with_exemplars(&list, self.session.options().clone())?;
         session.set_constraints(self.session.constraints().cloned())?;
         self.session = session;
         Ok(self.exemplars.keep(list))
+    }
+
+    /// Guided synthesis: `sourceGuide` (the exemplar's size) and `targetGuide` (the output's
+    /// size), with the same channels, add `weight ||g_source - g_target||^2` to the M-step's
+    /// distance (1: a guide value counts as much as a colour value). Style transfer: the
+    /// exemplar's luminance as the source guide, a photo's as the target guide. Before the
+    /// first step, with the pixel energy and one exemplar.
+    #[wasm_bindgen(js_name = setGuides)]
+    pub fn set_guides(
+        &mut self,
+        source_guide: &Exemplar,
+        target_guide: &Exemplar,
+        weight: f64,
+    ) -> JsResult<()> {
+        Ok(self
+            .session
+            .set_guides(source_guide.image(), target_guide.image(), weight as f32)?)
     }
 
     /// Which exemplar each output pixel's nearest match lies in, each in its own colour (as

@@ -143,6 +143,13 @@ export class TextureOptimization implements Steppable<TextureOptimizationEvent> 
   addExemplar(exemplar: Exemplar): number;
   /** Which exemplar each output pixel comes from, each in its own colour (`addExemplar`'s index). */
   renderSourcesInto(target: RgbaTarget): void;
+  /**
+   * Guided synthesis: `sourceGuide` (the exemplar's size) and `targetGuide` (the output's size),
+   * with the same channels, add `weight ||g_source - g_target||^2` to the search's distance.
+   * Style transfer: the exemplar's luminance as the source guide, a photo's as the target's.
+   * @throws {TexsynthError} after the first step, sizes or channels that differ, a bad weight.
+   */
+  setGuides(sourceGuide: Exemplar, targetGuide: Exemplar, weight: number): void;
   transferInto(other: Exemplar, target: RgbaTarget): void;
   renderInto(target: RgbaTarget): void;
   /** The colour-coded offset map (red = exemplar x, green = exemplar y). */

@@ -44,6 +44,26 @@ pub fn feature_map(image: &Image, mu: f32, edge: Edge) -> FeatureMap {
     }
 }
 
+/// `map` with the channels of `guide` (the map's size) appended to every pixel, scaled by
+/// `scale`: the distance of two such vectors gains `scale^2 ||g - g'||^2`, the guide term of
+/// guided synthesis (Hertzmann et al. 2001's image analogies, Embark's guide maps).
+#[must_use]
+pub fn append_guide(map: FeatureMap, guide: &Image, scale: f32) -> FeatureMap {
+    let g = guide.channels();
+    let dims = map.dims + g;
+    let mut data = Vec::with_capacity(map.width * map.height * dims);
+    for (pixel, extra) in map.data.chunks_exact(map.dims).zip(guide.data().chunks_exact(g)) {
+        data.extend_from_slice(pixel);
+        data.extend(extra.iter().map(|v| v * scale));
+    }
+    FeatureMap {
+        width: map.width,
+        height: map.height,
+        dims,
+        data,
+    }
+}
+
 /// Copies the `size` x `size` neighbourhood with top-left (x0, y0) into `out`, row by row,
 /// wrapping around the borders when `wrap` (the caller keeps it inside otherwise).
 pub fn gather(map: &FeatureMap, x0: usize, y0: usize, size: usize, wrap: bool, out: &mut [f32]) {

@@ -5,7 +5,7 @@
 
 use super::constraints::{Constraint, QueryTerms};
 use super::e_step::{Matches, Sums, robust_weights};
-use super::features::feature_map;
+use super::features::{append_guide, feature_map};
 use super::histogram::{Scratch, SortedChannels};
 use super::m_step::Matcher;
 use super::occurrence::{Occurrence, strength};
@@ -148,6 +148,9 @@ pub struct LevelSolver {
     /// Exemplar neighbourhoods no match may take (non-zero per top-left corner, `extent().0`
     /// per row; empty: none), see [`LevelSolver::exclude`].
     excluded: Vec<f32>,
+    /// The target guide at this level's output size and its scale (sqrt of the guide weight),
+    /// appended to every query (see [`LevelSolver::guided`]).
+    target_guide: Option<(Image, f32)>,
     /// The M-step under way, between steps of a session that splits iterations.
     running: Option<MStepRun>,
     /// The E-step under way.
@@ -157,7 +160,23 @@ pub struct LevelSolver {
 impl LevelSolver {
     /// A level over `exemplar` (this level's resolution of it) with a random match per node.
     pub fn new(exemplar: &Image, setup: LevelSetup, rng: &mut Rng) -> Self {
-        Self::build(exemplar, setup, false, rng)
+        Self::build(exemplar, setup, false, None, rng)
+    }
+
+    /// A level whose distance adds `weight` times the squared difference of guide values:
+    /// `source_guide` (the exemplar's size at this level) is appended to every exemplar
+    /// neighbourhood, `target_guide` (the output's) to every query. Pixel energy only.
+    pub fn guided(
+        exemplar: &Image,
+        setup: LevelSetup,
+        (source_guide, target_guide): (&Image, Image),
+        weight: f32,
+        rng: &mut Rng,
+    ) -> Self {
+        let scale = weight.sqrt();
+        let mut solver = Self::build(exemplar, setup, false, Some((source_guide, scale)), rng);
+        solver.target_guide = Some((target_guide, scale));
+        solver
     }
 
     /// A level whose matches have half-pixel precision (see [`phases`]): the searches run over
@@ -168,11 +187,21 @@ impl LevelSolver {
             setup.energy.wavelet().is_none(),
             "flow frames compare pixels"
         );
-        Self::build(exemplar, setup, true, rng)
+        Self::build(exemplar, setup, true, None, rng)
     }
 
-    fn build(exemplar: &Image, setup: LevelSetup, sub_pixel: bool, rng: &mut Rng) -> Self {
+    fn build(
+        exemplar: &Image,
+        setup: LevelSetup,
+        sub_pixel: bool,
+        guide: Option<(&Image, f32)>,
+        rng: &mut Rng,
+    ) -> Self {
         let map = feature_map(exemplar, setup.search_mu, Edge::Clamp);
+        let map = match guide {
+            Some((guide, scale)) => append_guide(map, guide, scale),
+            None => map,
+        };
         let wavelet = setup.energy.wavelet().map(|w| {
             WaveletEnergy::new(
                 w,
@@ -231,6 +260,7 @@ impl LevelSolver {
             running: None,
             summing: None,
             excluded: Vec::new(),
+            target_guide: None,
             setup,
             matcher,
             cols,
@@ -361,13 +391,22 @@ impl LevelSolver {
         } = self.setup;
         self.abandon_m_step();
         let occurrence = self.occurrence();
+        let map = self.query_map(feature_map(output, search_mu, edge(wrap)));
         self.running = Some(MStepRun {
-            map: feature_map(output, search_mu, edge(wrap)),
+            map,
             occurrence,
             progress: self.matcher.progress(self.matches.len()),
             terms: None,
             constrained: None,
         });
+    }
+
+    /// The output's feature map with the target guide appended, when the level has one.
+    pub(super) fn query_map(&self, map: FeatureMap) -> FeatureMap {
+        match &self.target_guide {
+            Some((guide, scale)) => append_guide(map, guide, *scale),
+            None => map,
+        }
     }
 
     /// Drops an M-step begun and not finished; its occurrence penalty is kept for the next.

@@ -24,6 +24,8 @@ pub mod teaching;
 pub mod wavelet_energy;
 
 #[cfg(test)]
+mod guide_tests;
+#[cfg(test)]
 mod start_tests;
 #[cfg(test)]
 mod tests;

@@ -21,7 +21,7 @@ impl LevelSolver {
         } = self.setup;
         // A measure replaces an M-step.
         self.abandon_m_step();
-        let map = feature_map(output, search_mu, edge(wrap));
+        let map = self.query_map(feature_map(output, search_mu, edge(wrap)));
         self.measure_distances(&map, true);
         self.settle();
     }
