@@ -11,7 +11,7 @@ use super::exemplar::Exemplar;
 use super::exemplars::{ExemplarList, sources_view};
 use super::features::FeatureMap;
 use super::options::{OptionsReader, object};
-use super::pixels::{render_into, write_rgba};
+use super::pixels::{check_target_size, render_into, write_rgba};
 use super::schema::{
     DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field, output_size,
 };
@@ -361,6 +361,8 @@ impl GraphcutTextures {
     /// or scaled sources is refused.
     #[wasm_bindgen(js_name = transferInto)]
     pub fn transfer_into(&self, other: &Exemplar, target: &Uint8ClampedArray) -> JsResult<()> {
+        let canvas = &self.session.synthesis().canvas;
+        check_target_size(target, canvas.width, canvas.height)?;
         let map = self.session.source_map()?;
         render_into(&map.transfer(other.image())?, target)
     }

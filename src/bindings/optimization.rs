@@ -9,7 +9,7 @@ use super::error::JsResult;
 use super::exemplar::Exemplar;
 use super::exemplars::{ExemplarList, sources_view};
 use super::options::{OptionsReader, object};
-use super::pixels::{render_into, write_rgba};
+use super::pixels::{check_target_size, render_into, write_rgba};
 use super::schema::{
     DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field, output_size,
 };
@@ -390,6 +390,8 @@ impl TextureOptimization {
     /// that match pixel for pixel. Throws before the finest level has run.
     #[wasm_bindgen(js_name = transferInto)]
     pub fn transfer_into(&self, other: &Exemplar, target: &Uint8ClampedArray) -> JsResult<()> {
+        let o = self.session.options();
+        check_target_size(target, o.output_width, o.output_height)?;
         let map = self.session.source_map()?;
         render_into(&map.transfer(other.image())?, target)
     }

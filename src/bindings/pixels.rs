@@ -70,6 +70,23 @@ pub fn check_target(target: &JsValue) -> JsResult<()> {
     }
 }
 
+/// Checks that `target` is a byte array of exactly `width * height * 4` bytes, before any work
+/// whose result it is to receive.
+pub fn check_target_size(target: &JsValue, width: usize, height: usize) -> JsResult<()> {
+    check_target(target)?;
+    let target: &Uint8ClampedArray = target.unchecked_ref();
+    let (expected, actual) = (width * height * 4, target.length() as usize);
+    if actual != expected {
+        return Err(Error::LengthMismatch {
+            what: "target pixel array",
+            expected,
+            actual,
+        }
+        .into());
+    }
+    Ok(())
+}
+
 /// Writes the image as RGBA8 into the caller's array, which must be exactly `width * height * 4`
 /// long (the `data` of an `ImageData` of the image's size).
 pub fn render_into(image: &Image, target: &Uint8ClampedArray) -> JsResult<()> {

@@ -252,4 +252,23 @@ export const BAD_CALLS = [
   ['a FeatureMap as an Exemplar', () => new api.TextureOptimization(api.detectFeatures(ex(), {}), {}), /Exemplar/],
   ['a plain object as an Exemplar', () => new api.GraphcutTextures({ width: 8, height: 8 }, {}), /Exemplar/],
   ['undefined as an Exemplar', () => new api.FlowAnimation(undefined, {}), /Exemplar|undefined/],
+  // Inpainting, material sets, several exemplars, guides.
+  ['Inpainting: a mask of numbers', () => new api.Inpainting(ex(), [1, 2, 3], {}), 'mask'],
+  ['Inpainting: a string as the mask', () => new api.Inpainting(ex(), 'hole', {}), /mask|Uint8Array|string/],
+  ['Inpainting.withExemplar: a plain object as the exemplar', () => api.Inpainting.withExemplar(ex(), new Uint8Array(32 * 32).fill(1, 0, 40), { width: 8 }, {}), /Exemplar/],
+  ['extendBorder: NaN', () => api.extendBorder(ex(), NaN), 'border'],
+  ['extendBorder: a huge border', () => api.extendBorder(ex(), 1e6), /extended image|size/],
+  ['extendBorder: an array', () => api.extendBorder(ex(), [1, 2, 3, 4]), /border/],
+  ['extendBorder: null', () => api.extendBorder(ex(), null), 'border'],
+  ['GraphcutTextures.transferInto: a plain object', () => new api.GraphcutTextures(ex(), { outputWidth: 16, outputHeight: 16 }).transferInto({}, rgba(16, 16)), /Exemplar/],
+  ['GraphcutTextures.transferInto: before any step (nothing covered)', () => new api.GraphcutTextures(ex(), { outputWidth: 16, outputHeight: 16 }).transferInto(ex(), rgba(16, 16)), OK],
+  ['TextureOptimization.transferInto: a short target', () => {
+    const s = new api.TextureOptimization(ex(), { outputWidth: 16, outputHeight: 16, neighbourhoodSizes: [4], iterations: 1 });
+    exercise(s, 50);
+    s.transferInto(ex(), new Uint8ClampedArray(7));
+  }, 'target'],
+  ['GraphcutTextures.addExemplar: undefined', () => new api.GraphcutTextures(ex(), {}).addExemplar(undefined), /Exemplar|undefined/],
+  ['TextureOptimization.addExemplar: a 12x12 exemplar', () => new api.TextureOptimization(ex(), {}).addExemplar(ex(12)), /exemplar size 12x12/],
+  ['TextureOptimization.setGuides: strings', () => new api.TextureOptimization(ex(), {}).setGuides('a', 'b', 1), /Exemplar/],
+  ['TextureOptimization.setGuides: a weight of Infinity', () => new api.TextureOptimization(ex(), { outputWidth: 32, outputHeight: 32 }).setGuides(ex(), ex(), Infinity), 'guideWeight'],
 ];

@@ -7,7 +7,7 @@
 import { api } from './fixtures.mjs';
 import { BAD_CALLS } from './bad_calls.mjs';
 import { BAD_OPTIONS, BAD_VALUES, EITHER, EITHER_SIZE, NAMED, badEnum } from './bad_values.mjs';
-import { SESSIONS, exercise } from './sessions.mjs';
+import { SESSIONS, exercise, inputFor } from './sessions.mjs';
 
 /** A budget refusal is a documented answer to any size: it names the budget option. */
 const BUDGET = 'memoryBudgetMiB';
@@ -106,8 +106,13 @@ function methodRows(kind, spec) {
   for (const name of names) {
     rows.push([`${kind}.${name}() with no arguments`, () => spec.make({})[name](), 'no-trap']);
     if (!/^render|Into$/.test(name)) continue;
-    // renderFrameInto, renderSeamsInto and renderSliceXtInto take a frame or row first.
-    const call = (s, buffer) => (kind === 'VideoTextures' && /^render(Frame|Seams|SliceXt)Into$/.test(name) ? s[name](0, buffer) : s[name](buffer));
+    // renderFrameInto, renderSeamsInto and renderSliceXtInto take a frame or row first, and
+    // transferInto the image to transfer (one of the session's exemplar size).
+    const first = (s) => (name === 'transferInto' ? inputFor(kind) : kind === 'VideoTextures' && /^render(Frame|Seams|SliceXt)Into$/.test(name) ? 0 : undefined);
+    const call = (s, buffer) => {
+      const lead = first(s);
+      return lead === undefined ? s[name](buffer) : s[name](lead, buffer);
+    };
     rows.push([`${kind}.${name} into a short buffer`, () => call(spec.make({}), new Uint8ClampedArray(3)), /target pixel array|length/]);
     rows.push([`${kind}.${name} into null`, () => call(spec.make({}), null), 'target']);
   }
