@@ -3,6 +3,8 @@
 //! the padding right of a narrower one, or into the gap between two) is excluded (see
 //! `super::exclusion`). A match so lies inside one exemplar, and the band it lies in says which.
 
+use super::exclusion::halve;
+use crate::core::pyramid::half_size;
 use crate::core::{Image, Result};
 
 /// Rows of padding between two exemplars: the pyramid's blur reads two pixels across a border
@@ -57,6 +59,32 @@ impl Stack {
             .iter()
             .rposition(|&(y0, _, _)| y0 <= y)
             .unwrap_or(0)
+    }
+}
+
+/// The exemplars of a session over several.
+pub struct Several {
+    /// The exemplars stacked.
+    pub stack: Stack,
+    /// Each exemplar's Gaussian pyramid, index = octave.
+    pub pyramids: Vec<Vec<Image>>,
+}
+
+impl Several {
+    /// Every exemplar at `octave`.
+    pub fn at_octave(&self, octave: usize) -> Vec<Image> {
+        self.pyramids.iter().map(|p| p[octave].clone()).collect()
+    }
+
+    /// The stack's pixels at `octave` that no padding reaches through the pyramid's blur.
+    pub fn kept_at(&self, octave: usize) -> Vec<bool> {
+        let (mut w, mut h) = (self.stack.image.width(), self.stack.image.height());
+        let mut padding = self.stack.padding.clone();
+        for _ in 0..octave {
+            padding = halve(&padding, w, h);
+            (w, h) = (half_size(w), half_size(h));
+        }
+        padding.iter().map(|&p| !p).collect()
     }
 }
 

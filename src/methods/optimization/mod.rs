@@ -8,6 +8,7 @@ pub mod e_step;
 pub mod exemplars;
 pub mod exclusion;
 pub mod features;
+pub mod guides;
 pub mod histogram;
 pub mod initial;
 pub mod iteration;

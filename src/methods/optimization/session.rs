@@ -7,9 +7,10 @@ mod maps;
 mod several;
 
 use super::constraints::{Constraint, SoftConstraints};
-use guides::Guides;
-use several::Several;
+
 use super::e_step::edge;
+use super::exemplars::Several;
+use super::guides::Guides;
 use super::exclusion::exclusion_table;
 use super::histogram::SortedChannels;
 use super::initial::{Start, graphcut_start_options, random_patches};

@@ -6,30 +6,9 @@
 
 use super::Session;
 use crate::core::pyramid::gaussian_pyramid;
-use crate::core::{Edge, Error, Image, Result, Rng};
-use crate::methods::optimization::level::{LevelSetup, LevelSolver};
+use crate::core::{Edge, Error, Image, Result};
+use crate::methods::optimization::guides::Guides;
 use crate::methods::optimization::options::Energy;
-
-/// The guides at every octave, and the weight of their term.
-pub(super) struct Guides {
-    source: Vec<Image>,
-    target: Vec<Image>,
-    weight: f32,
-}
-
-impl Guides {
-    /// A level solver over `exemplar` at `octave` with the guides' term.
-    pub(super) fn level_solver(
-        &self,
-        exemplar: &Image,
-        setup: LevelSetup,
-        octave: usize,
-        rng: &mut Rng,
-    ) -> LevelSolver {
-        let guides = (&self.source[octave], self.target[octave].clone());
-        LevelSolver::guided(exemplar, setup, guides, self.weight, rng)
-    }
-}
 
 /// The largest guide weight accepted.
 pub const MAX_GUIDE_WEIGHT: f32 = 1e4;

@@ -5,35 +5,9 @@
 use super::Session;
 use crate::core::pyramid::{gaussian_pyramid, half_size};
 use crate::core::{Edge, Error, Image, Result};
-use crate::methods::optimization::exclusion::halve;
-use crate::methods::optimization::exemplars::{Stack, stack};
+use crate::methods::optimization::exemplars::{Several, stack};
 use crate::methods::optimization::options::Options;
 use crate::methods::optimization::schedule::plan;
-
-/// The exemplars of a session over several.
-pub(super) struct Several {
-    pub(super) stack: Stack,
-    /// Each exemplar's Gaussian pyramid, index = octave.
-    pub(super) pyramids: Vec<Vec<Image>>,
-}
-
-impl Several {
-    /// Every exemplar at `octave`.
-    pub(super) fn at_octave(&self, octave: usize) -> Vec<Image> {
-        self.pyramids.iter().map(|p| p[octave].clone()).collect()
-    }
-
-    /// The stack's pixels at `octave` that no padding reaches through the pyramid's blur.
-    pub(super) fn kept_at(&self, octave: usize) -> Vec<bool> {
-        let (mut w, mut h) = (self.stack.image.width(), self.stack.image.height());
-        let mut padding = self.stack.padding.clone();
-        for _ in 0..octave {
-            padding = halve(&padding, w, h);
-            (w, h) = (half_size(w), half_size(h));
-        }
-        padding.iter().map(|&p| !p).collect()
-    }
-}
 
 impl Session {
     /// A texture optimisation whose matches range over all of `exemplars`: each match lies
