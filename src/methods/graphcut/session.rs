@@ -72,8 +72,10 @@ impl Session {
         })
     }
 
-    /// A session whose patches come from any of `exemplars` (see
-    /// [`Synthesis::with_exemplars`]).
+    /// A session whose patches come from any of `exemplars`, each with its transformed
+    /// versions: every placement's candidates range over all of them, and each patch knows its
+    /// exemplar ([`Session::exemplar_map`]). Exemplars with fewer channels are widened to the
+    /// most any has.
     pub fn with_exemplars(exemplars: &[Image], options: Options) -> Result<Session> {
         Ok(Session::from_synthesis(Synthesis::with_exemplars(
             exemplars, options,
