@@ -10,16 +10,18 @@
 # ./scripts/bench.sh --write-docs [options of compare.sh] rewrites docs/benchmarks.md whole (and
 # the README's headline rows): the comparison with the peer (./scripts/compare.sh, default: the
 # samples at 256x256, seeds 1-3), the same comparison on $THREADS threads on each side (default 2;
-# THREADS=1 leaves it out) and the scaling tables (node scripts/bench-scaling.mjs with
+# THREADS=1 leaves it out), hole filling against the peer (compare.sh --task inpaint) and the scaling tables (node scripts/bench-scaling.mjs with
 # $SCALING_ARGS, default the output sweep to 1024x1024 without the exemplar sweep).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ "${1:-}" = --write-docs ]; then
   shift
   out=results/compare
+  dir_args=()
   prev=""
   for arg in "$@"; do
     [ "$prev" = --out ] && out="$arg"
+    [ "$prev" = --dir ] && dir_args=(--dir "$arg")
     prev="$arg"
   done
   ./scripts/compare.sh "$@"
@@ -28,10 +30,12 @@ if [ "${1:-}" = --write-docs ]; then
     ./scripts/compare.sh "$@" --reuse-pkg --threads "${THREADS:-2}" --out "$out-threads"
     threads_args=(--threads "$out-threads/results.json")
   fi
+  # Hole filling against the peer, on the same folder (native only).
+  ./scripts/compare.sh --task inpaint --seeds 1 "${dir_args[@]}" --out "$out-inpaint"
   scaling="$(mktemp)"
   # shellcheck disable=SC2086
   node scripts/bench-scaling.mjs ${SCALING_ARGS:---outputs 256,512,1024 --exemplars none} | grep -E '^(\||$)' > "$scaling"
-  node scripts/write-benchmarks.mjs "$out/results.json" "$scaling" "${threads_args[@]}" \
+  node scripts/write-benchmarks.mjs "$out/results.json" "$scaling" "${threads_args[@]}" --inpaint "$out-inpaint/inpaint.json" \
     --command "./scripts/bench.sh --write-docs $* (THREADS: ${THREADS:-2}, SCALING_ARGS: ${SCALING_ARGS:---outputs 256,512,1024 --exemplars none})"
   rm -f "$scaling"
   exit 0

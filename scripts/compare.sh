@@ -22,6 +22,7 @@ threads=1
 pass=()
 prev=""
 for arg in "$@"; do
+  [ "$prev" = --task ] && [ "$arg" = inpaint ] && wasm=0
   case "$arg" in
     --no-wasm) wasm=0 ;;
     --reuse-pkg) build_pkg=0 ;;

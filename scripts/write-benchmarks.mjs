@@ -1,8 +1,9 @@
 // Writes docs/benchmarks.md whole from a comparison run (compare.sh's results.json) and, when
 // given, the scaling tables (bench-scaling.mjs's output), and the headline rows of the README
 // between its `<!-- headline -->` markers. Run by `./scripts/bench.sh --write-docs`. With
-// --threads, a second comparison run at N threads (compare.sh --threads N) gets its own section.
-//   node scripts/write-benchmarks.mjs RESULTS.json [SCALING.md] [--threads RESULTS.json] --command "..."
+// --threads, a second comparison run at N threads (compare.sh --threads N) gets its own section;
+// with --inpaint, the hole-filling comparison (compare.sh --task inpaint's inpaint.json) too.
+//   node scripts/write-benchmarks.mjs RESULTS.json [SCALING.md] [--threads RESULTS.json] [--inpaint INPAINT.json] --command "..."
 import { readFileSync, writeFileSync } from 'node:fs';
 import { basename } from 'node:path';
 
@@ -12,6 +13,8 @@ const commandAt = args.indexOf('--command');
 const command = commandAt >= 0 ? args.splice(commandAt, 2)[1] : './scripts/bench.sh --write-docs';
 const threadsAt = args.indexOf('--threads');
 const threadsPath = threadsAt >= 0 ? args.splice(threadsAt, 2)[1] : null;
+const inpaintAt = args.indexOf('--inpaint');
+const inpaintPath = inpaintAt >= 0 ? args.splice(inpaintAt, 2)[1] : null;
 const [resultsPath, scalingPath] = args;
 if (!resultsPath) throw new Error('usage: write-benchmarks.mjs RESULTS.json [SCALING.md] [--command TEXT]');
 const report = JSON.parse(readFileSync(resultsPath, 'utf8'));
@@ -112,6 +115,37 @@ if (threadsPath) {
   }
 }
 
+if (inpaintPath) {
+  const inpaint = JSON.parse(readFileSync(inpaintPath, 'utf8'));
+  const n = inpaint.threads;
+  const pct = (share) => `${Math.round(share * 100)}%`;
+  lines.push('', '## Hole filling', '',
+    'Each texture (the largest of its sizes) gets a centred square hole of 25% and of 40% of its pixels,',
+    "erased to grey, and is filled by `Inpainting` (defaults, one thread) and by the peer's inpaint",
+    '(`inpaint_example`, sampling from the known pixels only, on one thread and on all threads). The',
+    'figures of the filled square, lower is better for all: coherence against the known part (7x7',
+    'patches to the nearest patch wholly inside one of the four known rectangles around the hole),',
+    "the flat fraction, and the seam score, the mean colour step across the hole's boundary over the",
+    "image's mean step between neighbours (1: the boundary is as busy as the texture). The peer's",
+    "quality figures are its one-thread run's; the contact sheets (image, mask, texsynth, peer) are",
+    'in `contact-sheets/` beside `inpaint.json`.', '',
+    `| texture | hole | texsynth ms | peer ms, 1 thread | peer ms, ${n} threads | coherence texsynth / peer | flat texsynth / peer | seam texsynth / peer |`,
+    '|---|---|---|---|---|---|---|---|');
+  for (const r of inpaint.rows) {
+    const [o, p] = [r.ours, r.peer_one_thread];
+    lines.push(`| ${r.texture} | ${pct(r.share)} | ${ms(o.ms)} | ${ms(p.ms)} | ${ms(r.peer_threads.ms)} | ${o.coherence.toFixed(4)} / ${p.coherence.toFixed(4)} | ${o.flat.toFixed(2)} / ${p.flat.toFixed(2)} | ${o.seam.toFixed(2)} / ${p.seam.toFixed(2)} |`);
+  }
+  lines.push('');
+  for (const share of [...new Set(inpaint.rows.map((r) => r.share))]) {
+    const of = inpaint.rows.filter((r) => r.share === share);
+    const good = (peerOf) => of.filter((r) => {
+      const p = peerOf(r);
+      return r.ours.ms < p.ms && r.ours.coherence <= p.coherence * inpaint.tolerance && r.ours.seam <= p.seam * inpaint.tolerance;
+    }).length;
+    lines.push(`- ${pct(share)} hole: texsynth faster and no worse on coherence and seam (within ${Math.round((inpaint.tolerance - 1) * 100)}%) on ${good((r) => r.peer_one_thread)} of ${of.length} textures against the peer on one thread, ${good((r) => r.peer_threads)} of ${of.length} against it on ${n} threads.`);
+  }
+}
+
 if (scalingPath) {
   lines.push('', '## How time and memory grow', '',
     'Every method as wasm in Node, one fresh process per case, from the 128x128 tiles sample to',
@@ -120,7 +154,7 @@ if (scalingPath) {
 }
 
 lines.push('', '## The tools', '',
-  '- `./scripts/compare.sh [--dir DIR] [--size WxH] [--seeds 1,2,3] [--methods ...] [--threads N]`: the comparison above, on any folder of PNG and JPEG files; `--help` lists the options.',
+  '- `./scripts/compare.sh [--dir DIR] [--size WxH] [--seeds 1,2,3] [--methods ...] [--threads N]`: the comparison above, on any folder of PNG and JPEG files; `--help` lists the options. `--task inpaint` runs the hole-filling comparison instead.',
   "- `node scripts/bench-threads.mjs [--rounds 3] [--cases ...] [--environments node,chromium]`: the threaded module on one thread against every thread of the machine, in Node and in the page's worker in headless Chromium, with the serial phases and the speed-up Amdahl's law projects for 8 threads.",
   '- `node scripts/bench-scaling.mjs [--outputs ...] [--exemplars ...] [--repeat N]`: time, longest step and peak memory against output and exemplar size; writes `www/scaling.svg`.',
   '- `node scripts/bench-ab.mjs A/pkg B/pkg --method M --size N --runs R`: two builds of the package timed interleaved in one process, for judging a speed change on a noisy machine.',

@@ -14,10 +14,14 @@ usage: compare [options]
                         (default: all)
   --crop WxH            cut the centre WxH out of each exemplar first (default: no crop)
   --exemplar-size N     then shrink so the longer side is at most N; 0 keeps any size (default: 256)
-  --out DIR             where the results go (default: results/compare)
+  --out DIR             where the results go (default: results/compare; results/inpaint for
+                        --task inpaint)
   --threads N           threads for texsynth (rayon; the threaded wasm module) and the peer alike;
                         above 1 needs the parallel feature (default: 1)
   --wasm FILE           timings of the wasm build in Node to merge (scripts/compare_wasm.mjs)
+  --task T              synthesis (the methods above, default) or inpaint (a centred hole of 25%
+                        and of 40% in each texture, the largest of its sizes, filled by texsynth's
+                        Inpainting and the peer's inpaint; native only)
   --prepare-only        only write the prepared exemplars and plan.json, print the plan's path
   --help                this text";
 
@@ -34,6 +38,16 @@ pub struct Args {
     pub wasm: Option<PathBuf>,
     pub prepare_only: bool,
     pub threads: usize,
+    pub task: Task,
+}
+
+/// What `compare` measures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Task {
+    /// Synthesis from each exemplar by every method.
+    Synthesis,
+    /// Hole filling (see `inpaint.rs`).
+    Inpaint,
 }
 
 impl Default for Args {
@@ -50,6 +64,7 @@ impl Default for Args {
             wasm: None,
             prepare_only: false,
             threads: 1,
+            task: Task::Synthesis,
         }
     }
 }
@@ -98,8 +113,22 @@ pub fn parse(argv: &[String]) -> Result<Parsed, String> {
             "--seeds" => args.seeds = seeds(value()?)?,
             "--threads" => args.threads = threads(value()?)?,
             "--methods" => args.methods = methods(value()?)?,
+            "--task" => {
+                args.task = match value()?.as_str() {
+                    "synthesis" => Task::Synthesis,
+                    "inpaint" => Task::Inpaint,
+                    other => {
+                        return Err(format!(
+                            "--task: expected synthesis or inpaint, got '{other}'"
+                        ));
+                    }
+                }
+            }
             other => return Err(format!("unknown option '{other}' (see --help)")),
         }
+    }
+    if args.task == Task::Inpaint && !argv.iter().any(|a| a == "--out") {
+        args.out = PathBuf::from("results/inpaint");
     }
     Ok(Parsed::Run(args))
 }

@@ -9,6 +9,7 @@
 mod args;
 mod contact_sheet;
 mod font;
+mod inpaint;
 mod methods;
 mod peer;
 mod prepare;
@@ -67,6 +68,9 @@ fn run(args: &Args, argv: &[String]) -> Result<(), String> {
         // The path is the only line on stdout, for scripts/compare.sh to pass on to Node.
         println!("{}", wasm::write_plan(args, &exemplars)?.display());
         return Ok(());
+    }
+    if args.task == args::Task::Inpaint {
+        return inpaint::run(args, &exemplars, argv);
     }
     let wasm = args
         .wasm

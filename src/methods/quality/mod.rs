@@ -187,6 +187,26 @@ pub fn coherence_by_patch(exemplar: &Image, output: &Image) -> Result<Vec<(usize
     Ok(patches)
 }
 
+/// The coherence of `output` against the patches of any of `parts` (each at least 7x7; any
+/// channels, compared as RGB): the mean over `output`'s 7x7 patches (stride 2) of the distance
+/// to the nearest patch lying wholly inside one part. Scores a filled hole against the known
+/// pixels around it, given as the rectangles they make up.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn coherence_against(parts: &[Image], output: &Image) -> Result<f64> {
+    let parts: Vec<Image> = parts
+        .iter()
+        .filter(|p| p.width() >= PATCH && p.height() >= PATCH)
+        .map(|p| p.with_channels(3))
+        .collect::<Result<_>>()?;
+    if parts.is_empty() || output.width() < PATCH || output.height() < PATCH {
+        return Err(Error::InvalidParameter {
+            name: "parts",
+            reason: format!("need a part and an output of at least {PATCH}x{PATCH}"),
+        });
+    }
+    Ok(directed_to_any(&output.with_channels(3)?, &parts))
+}
+
 /// [`directed`] to the nearest patch of any of `to`.
 #[cfg(not(target_arch = "wasm32"))]
 fn directed_to_any(from: &Image, to: &[Image]) -> f64 {
