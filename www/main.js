@@ -56,6 +56,8 @@ const ui = {
   outputWidth: () => clampInt($('out-width').value, 16, 2048, 256),
   outputHeight: () => clampInt($('out-height').value, 16, 2048, 256),
   seed: () => clampInt($('seed').value, 0, 2 ** 32, 1),
+  /** Shows `message` in the page's error display (cleared by the next step that succeeds). */
+  showError: (message) => showError(message),
   /** Runs the current session on (a panel calls it when new input should be followed). */
   run: () => {
     if (!state.exemplar || !state.runner) return;

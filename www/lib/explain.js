@@ -8,11 +8,20 @@ const KWATRA_2003 = 'Kwatra, Schödl, Essa, Turk & Bobick, "Graphcut Textures", 
 
 const SHEN_2009 = 'Shen, Jin, Mao & Feng, "A unified framework for designing textures using energy optimization", Pattern Recognition 2009 (Shen et al.)';
 const WU_YU_2004 = 'Wu & Yu, "Feature Matching and Deformation for Texture Synthesis", SIGGRAPH 2004';
+const HERTZMANN_2001 = 'Hertzmann, Jacobs, Oliver, Curless & Salesin, "Image Analogies", SIGGRAPH 2001';
 
 export const EXPLANATIONS = {
   'to-start': {
     text: 'Texture optimization treats synthesis as energy minimisation: the texture energy (1) sums, over a grid of overlapping neighbourhoods x_p of the output, the distance to the nearest exemplar neighbourhood z_p. The coarsest level starts from a quick graph-cut synthesis (graph-cut textures, sub-patch matching; the paper starts at random) so that lattices and large elements begin whole. Press Step to see one iteration.',
     cite: [KWATRA_2005, 'section 3, equation (1) and Algorithm 1', 'the paragraph "We can use the above formulation to perform texture synthesis by iteratively refining an initial estimate..."'],
+  },
+  'to-guided-start': {
+    text: 'Guided synthesis: a source guide (the exemplar\'s luminance) and a target guide (shown beside the output) add weight · ||g_source − g_target||² to the M-step\'s distance, so each z_p must look like the exemplar and have the guide value the target asks for where its node is. With a photo as the target guide this is the texture transfer of image analogies: the output draws the photo with the exemplar\'s texture.',
+    cite: [HERTZMANN_2001, 'section 4.4, Texture transfer (guides as in section 3; texture-by-numbers in section 4.6)', 'the paragraph on texture transfer, where the weight trades matching the texture against matching the target'],
+  },
+  'to-guided-m-step': {
+    text: 'M-step with guides: each node p takes the exemplar neighbourhood z_p nearest to x_p in colour plus weight times the squared difference of the guides (the exemplar\'s luminance there against the target guide at p). The E-step still averages colours only, so the guide acts through the matches.',
+    cite: [HERTZMANN_2001, 'section 4.4, Texture transfer, with Kwatra et al. 2005 section 3 (the M-step)', 'the paragraph on texture transfer, where the weight trades matching the texture against matching the target'],
   },
   'to-level': {
     text: 'A new level (section 3.2): the output is up-sampled or the neighbourhood shrinks, coarse to fine. The energy jumps here, which the paper calls desirable: it helps the algorithm out of poor local minima.',

@@ -1,13 +1,16 @@
 // The "Texture optimization" panel (Kwatra et al. 2005): every EM iteration is drawn as it
 // happens, with the energy plot of the paper's Fig. 3 and a teaching view of the neighbourhood
 // grid and the chosen exemplar positions. With "paint constraints" on, colour strokes painted on
-// the output become soft constraints (section 4) and the synthesis runs on to follow them.
+// the output become soft constraints (section 4) and the synthesis runs on to follow them. A
+// guide (optimization-guides.js) steers the M-step towards a target guide: style transfer or a
+// gradient.
 import { drawInto } from '../lib/canvas.js';
 import { drawLinePlot } from '../lib/plot.js';
 import { showQualityOrWhy } from '../lib/quality.js';
 import { explain } from '../lib/explain.js';
 import { paintable, unpaintable } from '../lib/keyboard-brush.js';
 import { remoteSession } from '../lib/worker.js';
+import { GUIDE_OPTIONS_HTML, createGuides } from './optimization-guides.js';
 import {
   STEP_ANATOMY_HTML, drawCollage, drawSideViews, nodeUnderPointer, outlineNode,
 } from './optimization-anatomy.js';
@@ -33,7 +36,7 @@ const OPTIONS_HTML = `
     <input id="to-colour" class="view" type="color" value="#c83c28" aria-label="paint colour">
     <label>λ <input id="to-lambda" class="view" type="number" value="2" min="0" max="1000" step="0.5"></label>
     <button id="to-clear-paint" type="button" class="view">Clear paint</button>
-  </span>`;
+  </span>${GUIDE_OPTIONS_HTML}`;
 
 const SIDE_HTML = `
   <div class="readout" id="to-readout">press Run or Step</div>
@@ -53,6 +56,7 @@ export function createPanel(ui) {
   // The painted constraints: colours with alpha as the mask, at output size.
   let paint = null;
   let painting = false;
+  const guides = createGuides(ui, ui.showError);
 
   function options() {
     return {
@@ -93,8 +97,13 @@ export function createPanel(ui) {
         created = await current;
         created.schedulePlan = await created.send('schedule');
         if (anatomyOn()) await created.send('setHalfSteps', true);
+        // Guides go in before the first step; a refusal names what it refuses.
+        await guides.apply(created);
       } catch (error) {
-        if (pending === current) pending = null;
+        if (pending === current) {
+          pending = null;
+          created?.free().catch(() => {});
+        }
         throw error;
       }
       if (pending !== current) return null;
@@ -234,6 +243,7 @@ export function createPanel(ui) {
       },
       (error) => {
         ui.$('to-readout').textContent = error.message;
+        ui.showError(error.message);
       },
     );
   }
@@ -273,6 +283,7 @@ export function createPanel(ui) {
           applyPaint();
         } catch (error) {
           ui.$('to-readout').textContent = error.message;
+          ui.showError(error.message);
         }
       };
       window.addEventListener('pointerup', this.onPointerUp);
@@ -281,8 +292,10 @@ export function createPanel(ui) {
         paint = null;
         if (session) session.send('clearConstraints').then(() => session?.refresh()).then(draw);
       });
+      guides.mount();
     },
     unmount() {
+      guides.unmount();
       ui.outputCanvas.onpointerdown = ui.outputCanvas.onpointermove = null;
       unpaintable(ui.outputCanvas);
       window.removeEventListener('pointerup', this.onPointerUp);
@@ -300,10 +313,12 @@ export function createPanel(ui) {
       drawAnatomy();
       document.body.dataset.half = lastHalf;
       // What this step did, in the paper's terms: a level change, an E-step, an M-step.
-      const whole = event.kind === 'level' ? 'to-level' : event.kind === 'done' ? 'to-done' : 'to-m-step';
+      const mStep = guides.active() ? 'to-guided-m-step' : 'to-m-step';
+      const whole = event.kind === 'level' ? 'to-level' : event.kind === 'done' ? 'to-done' : mStep;
       const part = event.phase === 'start' ? 'to-graphcut-start' : `to-${event.phase}`;
       explain(ui.$('to-explain'), event.kind === 'part' ? part : whole);
       const constraint = paint ? ` · constraint error ${session.getter('constraintEnergy').toPrecision(3)}` : '';
+      const guided = guides.active() ? ` · guide: ${guides.describe()}` : '';
       // Large outputs split an iteration over several steps (kind 'part'): say how far it is.
       const PHASES = { 'first-match': 'first M-step', 'e-step': 'E-step', 'm-step': 'M-step' };
       const progress = event.kind !== 'part' ? ''
@@ -315,7 +330,7 @@ export function createPanel(ui) {
       ui.$('to-readout').textContent =
         `level ${event.level + 1}/${event.levelCount} · resolution 1/${event.scale} · ` +
         `neighbourhood ${event.neighbourhoodSize}×${event.neighbourhoodSize} · iteration ${event.iteration}${progress}` +
-        `${figures}${constraint}`;
+        `${figures}${constraint}${guided}`;
       document.body.dataset.iterations = String(event.totalIterations);
       document.body.dataset.steps = String(Number(document.body.dataset.steps ?? 0) + 1);
       document.body.dataset.stepKind = event.kind;
@@ -337,7 +352,8 @@ export function createPanel(ui) {
       document.body.dataset.iterations = '0';
       document.body.dataset.steps = '0';
       ui.$('to-readout').textContent = 'press Run or Step';
-      explain(ui.$('to-explain'), 'to-start');
+      explain(ui.$('to-explain'), guides.active() ? 'to-guided-start' : 'to-start');
+      guides.preview();
       ui.$('to-quality').textContent = '';
       ui.$('to-legend').textContent = '';
       drawLinePlot(ui.$('to-energy'), [], { title: 'energy per iteration (Fig. 3)' });
