@@ -25,7 +25,10 @@ pub struct Options {
     pub neighbourhood_sizes: Vec<usize>,
     /// Its cap on EM iterations per level. Default: 5.
     pub iterations: usize,
-    /// Its robust exponent r. Default: 0.8.
+    /// Its robust exponent r. Default: 2, least squares: the robust weights of r < 2 weigh
+    /// down the neighbourhoods that straddle the hole's boundary (they fit worst), so the pixels
+    /// next to the known ones follow the hole's inside and a seam shows (seam score, 12 samples
+    /// with 25% holes: mean |ln| 0.54 at r = 0.8, 0.37 at r = 2).
     pub r: f32,
     /// Its nearest-neighbourhood search. Default: PatchMatch.
     pub search: Search,
@@ -54,7 +57,7 @@ impl Default for Options {
             levels: 1,
             neighbourhood_sizes: vec![16, 8],
             iterations: 5,
-            r: 0.8,
+            r: 2.0,
             search: Search::PatchMatch,
             histogram_matching: 1.0,
             completeness: optimization::options::DEFAULT_COMPLETENESS,
