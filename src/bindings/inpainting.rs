@@ -64,8 +64,8 @@ pub(crate) const SCHEMA: Schema = Schema {
         },
         number(
             "r",
-            Some("0.8"),
-            "Robust IRLS exponent of the optimisation.",
+            Some("2"),
+            "IRLS exponent of the optimisation; below 2 the neighbourhoods across the hole's boundary weigh less and a seam shows there.",
         ),
         Opt {
             key: "search",
