@@ -112,3 +112,13 @@ export const qualityInPage = (page, sample, pixels, width, height) =>
     exemplar.free();
     return { coherence: q.coherence, completeness: q.completeness, histogram: q.histogram, flat: q.flat };
   }, { sample, pixels, width, height });
+
+/** Presses Tab until the focused element matches `selector`; returns the presses it took (at
+ * most `limit`). */
+export async function tabTo(page, selector, limit = 60) {
+  for (let n = 0; n < limit; n++) {
+    if (await page.evaluate((s) => document.activeElement?.matches(s), selector)) return n;
+    await page.keyboard.press('Tab');
+  }
+  throw new Error(`Tab never reached ${selector}`);
+}

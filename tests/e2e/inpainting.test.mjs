@@ -4,22 +4,13 @@
 // package's message, and uncrop gives an output larger than the input by its border.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { canvasPixels, openDemo, openPanel, RESULTS } from './harness.mjs';
+import { canvasPixels, openDemo, openPanel, RESULTS, tabTo } from './harness.mjs';
 
 let demo;
 before(async () => {
   demo = await openDemo();
 });
 after(async () => demo?.close());
-
-/** Presses Tab until the focused element matches `selector` (at most `limit` presses). */
-async function tabTo(page, selector, limit = 40) {
-  for (let n = 0; n < limit; n++) {
-    if (await page.evaluate((s) => document.activeElement?.matches(s), selector)) return;
-    await page.keyboard.press('Tab');
-  }
-  throw new Error(`Tab never reached ${selector}`);
-}
 
 /** Two animation frames: the panel redraws the painted hole once per frame. */
 const frames = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));

@@ -3,7 +3,7 @@
 // panel has an accessible name (from Chromium's accessibility tree); focus is visible.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { finishedOptimizationForPaint, openDemo, RESULTS } from './harness.mjs';
+import { finishedOptimizationForPaint, openDemo, RESULTS, tabTo } from './harness.mjs';
 
 let demo;
 before(async () => {
@@ -16,15 +16,6 @@ const focused = (page) => page.evaluate(() => {
   const style = getComputedStyle(el);
   return { id: el.id, sample: el.dataset.sample, panel: el.dataset.panel, outline: style.outlineStyle, outlineWidth: style.outlineWidth };
 });
-
-/** Presses Tab until the focused element matches `selector` (at most `limit` presses). */
-async function tabTo(page, selector, limit = 60) {
-  for (let n = 0; n < limit; n++) {
-    if (await page.evaluate((s) => document.activeElement?.matches(s), selector)) return n;
-    await page.keyboard.press('Tab');
-  }
-  throw new Error(`Tab never reached ${selector}`);
-}
 
 test('keyboard only: a sample, the graph-cut tab, a small output, Run to done', async () => {
   const { page, errors } = demo;

@@ -16,7 +16,7 @@
 //!
 //! Hard constraints ([`SoftConstraints::hard`], lambda infinite) are the limit of a large
 //! lambda taken exactly: the E-step sets a pixel to `(1 - m) * texture average + m c` (c itself
-//! where m = 1), and the M-step query is left as it is, since the E-step already put c there.
+//! where m = 1), and the M-step query is left as it is: the E-step already put c there.
 //! Inpainting holds the known pixels of an image so.
 
 use crate::core::{Error, Image, Result};

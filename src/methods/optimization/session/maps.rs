@@ -17,7 +17,7 @@ impl Session {
     pub fn source_map(&self) -> Result<SourceMap> {
         let not_yet = || Error::InvalidParameter {
             name: "transfer",
-            reason: "the source map is made at full resolution: step until the finest level \
+            reason: "the source map is made at full resolution: step on to the finest level \
                      has run"
                 .into(),
         };
