@@ -90,33 +90,14 @@ pub fn check_target_size(target: &JsValue, width: usize, height: usize) -> JsRes
 /// Writes the image as RGBA8 into the caller's array, which must be exactly `width * height * 4`
 /// long (the `data` of an `ImageData` of the image's size).
 pub fn render_into(image: &Image, target: &Uint8ClampedArray) -> JsResult<()> {
-    check_target(target)?;
-    let expected = image.pixel_count() * 4;
-    let actual = target.length() as usize;
-    if actual != expected {
-        return Err(Error::LengthMismatch {
-            what: "target pixel array",
-            expected,
-            actual,
-        }
-        .into());
-    }
+    check_target_size(target, image.width(), image.height())?;
     target.copy_from(&to_rgba8(image));
     Ok(())
 }
 
 /// Copies ready-made RGBA8 pixels into the caller's array, checking its length.
 pub fn write_rgba(rgba: &[u8], target: &Uint8ClampedArray) -> JsResult<()> {
-    check_target(target)?;
-    let actual = target.length() as usize;
-    if actual != rgba.len() {
-        return Err(Error::LengthMismatch {
-            what: "target pixel array",
-            expected: rgba.len(),
-            actual,
-        }
-        .into());
-    }
+    check_target_size(target, rgba.len() / 4, 1)?;
     target.copy_from(rgba);
     Ok(())
 }

@@ -113,7 +113,7 @@ export const qualityInPage = (page, sample, pixels, width, height) =>
     return { coherence: q.coherence, completeness: q.completeness, histogram: q.histogram, flat: q.flat };
   }, { sample, pixels, width, height });
 
-/** Presses Tab until the focused element matches `selector`; returns the presses it took (at
+/** Presses Tab till the focused element matches `selector`; returns the presses it took (at
  * most `limit`). */
 export async function tabTo(page, selector, limit = 60) {
   for (let n = 0; n < limit; n++) {
