@@ -45,6 +45,10 @@ where
     (0..n).map(f).collect()
 }
 
+/// The fewest pieces per thread a resumable loop hands to one call when it could stop sooner:
+/// with several pieces each, pieces of uneven cost even out over the threads.
+pub const MIN_ROUNDS: usize = 4;
+
 /// Threads that pieces may run on: 1 without a pool.
 pub fn threads() -> usize {
     #[cfg(feature = "parallel")]

@@ -81,11 +81,23 @@ impl Sums {
         }
     }
 
-    /// Adds the matched neighbourhoods of `nodes`. The output is cut into bands of
-    /// [`BAND_ROWS`] rows that are summed in parallel, each over the nodes that reach it in node
-    /// order: every pixel adds the same terms in the same order as one pass over the nodes, so
-    /// the sums are the same to the bit at any thread count.
-    pub fn add(&mut self, m: &Matches<'_>, nodes: std::ops::Range<usize>) {
+    /// The bands of [`BAND_ROWS`] output rows the sums are cut into.
+    #[must_use]
+    pub fn bands(&self) -> std::ops::Range<usize> {
+        0..self.height.div_ceil(BAND_ROWS)
+    }
+
+    /// Adds the matched neighbourhoods of `nodes` to the output rows of `bands` (of
+    /// [`Sums::bands`]). The bands are summed in parallel, each over the nodes that reach it in
+    /// node order: every pixel adds the same terms in the same order as one pass over the
+    /// nodes, so the sums are the same to the bit at any thread count, and whether the nodes or
+    /// the bands come in parts.
+    pub fn add(
+        &mut self,
+        m: &Matches<'_>,
+        nodes: std::ops::Range<usize>,
+        bands: std::ops::Range<usize>,
+    ) {
         let (w, h, c) = (self.width, self.height, self.channels);
         let gradient = m.mu > 0.0;
         let Sums {
@@ -140,6 +152,8 @@ impl Sums {
                     v_diff,
                 }
             })
+            .skip(bands.start)
+            .take(bands.len())
             .collect();
         let falloff_channels = &falloff_channels[..];
         parallel::for_each_piece_mut(&mut bands, 1, |_, band| {

@@ -10,7 +10,7 @@ use crate::solvers::nn::{Neighbourhoods, patches::gaussian_falloff};
 /// parts; the sums are the same).
 fn e_step(m: &Matches<'_>, output: &mut Image, constraint: Option<&Constraint>) -> usize {
     let mut sums = Sums::new(output, m.mu > 0.0);
-    sums.add(m, 0..m.matches.len());
+    sums.add(m, 0..m.matches.len(), sums.bands());
     sums.finish(m, output, constraint)
 }
 
@@ -105,7 +105,7 @@ fn bands_of_a_wrapping_output_equal_a_brute_force_average() {
     let mut out = Image::new(w, h, 2).unwrap();
     let mut sums = Sums::new(&out, false);
     for part in [0..7, 7..8, 8..nodes] {
-        sums.add(&m, part);
+        sums.add(&m, part, sums.bands());
     }
     sums.finish(&m, &mut out, None);
     for y in 0..h {
@@ -152,10 +152,14 @@ fn fixed_size_rows_equal_the_general_loop_to_the_bit() {
                 let m =
                     plain_matches(&exemplar, (&cols, &rows), &matches, &omegas, &falloff, wrap);
                 let mut out = Image::new(w, h, channels).unwrap();
-                // In two parts, as a session adds them.
+                // In parts: the nodes in two, then the second part's bands in two, as a
+                // session adds them.
                 let mut sums = Sums::new(&out, false);
-                sums.add(&m, 0..nodes / 3);
-                sums.add(&m, nodes / 3..nodes);
+                let bands = sums.bands();
+                let half = bands.start + bands.len() / 2;
+                sums.add(&m, 0..nodes / 3, bands.clone());
+                sums.add(&m, nodes / 3..nodes, bands.start..half);
+                sums.add(&m, nodes / 3..nodes, half..bands.end);
                 sums.finish(&m, &mut out, None);
                 out.data().iter().map(|v| v.to_bits()).collect::<Vec<_>>()
             };

@@ -14,7 +14,7 @@ use super::queries::GridQueries;
 use super::schedule::grid_axis;
 use super::wavelet_energy::{Energy, WaveletEnergy};
 use crate::core::sample::resize_bilinear;
-use crate::core::{Edge, Image, Result, Rng};
+use crate::core::{Edge, Image, Result, Rng, parallel};
 use crate::methods::optimization::e_step::edge;
 use crate::solvers::nn::patches::gaussian_falloff;
 use crate::solvers::nn::patchmatch::QueryGrid;
@@ -101,7 +101,7 @@ struct MStepRun {
     constrained: Option<(FeatureMap, Vec<f32>)>,
 }
 
-/// An E-step under way: its IRLS weights, its sums, and the next node to add.
+/// An E-step under way: its IRLS weights, its sums, and the next band of output rows to sum.
 struct EStepRun {
     weights: Vec<f32>,
     sums: Sums,
@@ -387,7 +387,7 @@ impl LevelSolver {
     pub fn e_step_fraction(&self) -> Option<f64> {
         self.summing
             .as_ref()
-            .map(|r| r.next as f64 / self.matches.len().max(1) as f64)
+            .map(|r| r.next as f64 / r.sums.bands().len().max(1) as f64)
     }
 
     /// Whether an M-step is begun and not finished.
@@ -569,17 +569,28 @@ impl LevelSolver {
         }
     }
 
-    /// Adds at most `budget` more nodes to the begun E-step's sums, taking them off it.
-    /// Returns true when every node is in.
+    /// Sums about `budget` more node visits of the begun E-step, taking them off it: whole
+    /// bands of output rows, each over every node that reaches it, in whole rounds of the
+    /// threads and at least [`parallel::MIN_ROUNDS`] of them, so the bands of one call keep
+    /// every thread busy (where the calls stop changes no sum). A band costs the nodes' visits
+    /// spread evenly over the bands. Returns true when every band is summed.
     pub fn resume_e_step(&mut self, exemplar: &Image, budget: &mut usize) -> bool {
         let mut run = self.summing.take().expect("an E-step is begun");
         let nodes = self.matches.len();
-        let end = run.next.saturating_add(*budget).min(nodes);
+        let bands = run.sums.bands().len();
+        let per_band = nodes.div_ceil(bands.max(1)).max(1);
+        let threads = parallel::threads();
+        let count = budget
+            .div_ceil(per_band)
+            .div_ceil(threads)
+            .max(parallel::MIN_ROUNDS)
+            .saturating_mul(threads);
+        let end = run.next.saturating_add(count).min(bands);
         let m = self.matches_for(exemplar, &run.weights);
-        run.sums.add(&m, run.next..end);
-        *budget -= end - run.next;
+        run.sums.add(&m, 0..nodes, run.next..end);
+        *budget = budget.saturating_sub((end - run.next) * per_band);
         run.next = end;
-        let done = end == nodes;
+        let done = end == bands;
         self.summing = Some(run);
         done
     }
@@ -613,7 +624,7 @@ impl LevelSolver {
         constraint: Option<&Constraint>,
     ) -> usize {
         let run = self.summing.take().expect("an E-step is begun");
-        debug_assert_eq!(run.next, self.matches.len(), "every node is summed");
+        debug_assert_eq!(run.next, run.sums.bands().end, "every band is summed");
         let m = self.matches_for(exemplar, &run.weights);
         run.sums.finish(&m, output, constraint)
     }

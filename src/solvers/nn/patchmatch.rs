@@ -71,7 +71,7 @@ struct Band<'a> {
 
 impl Search<'_> {
     /// [`improve`] in parts: visits whole bands of nodes from where `progress` stopped, about
-    /// `limit` visits, in whole bands and at least a band per thread (the sweeps run in a fixed
+    /// `limit` visits, in whole bands and at least [`parallel::MIN_ROUNDS`] bands per thread (the sweeps run in a fixed
     /// order and bands do not depend on each other within a sweep, so stopping and resuming
     /// gives the same matches as one run). Returns true when every sweep is done.
     pub fn resume<Q: Queries + Clone + Send + Sync>(
@@ -96,13 +96,14 @@ impl Search<'_> {
                 progress.snapshot.extend_from_slice(matches);
             }
             let pass = progress.pass;
-            // Bands in a batch: what `limit` asks for, and at least one per thread, in whole
-            // rounds of the threads (where a batch ends changes no match).
+            // Bands in a batch: what `limit` asks for, in whole rounds of the threads and at
+            // least MIN_ROUNDS of them, so that bands of uneven cost even out over the threads
+            // (where a batch ends changes no match).
             let threads = parallel::threads();
             let bands = (limit - visited)
                 .div_ceil(band_len)
-                .max(1)
                 .div_ceil(threads)
+                .max(parallel::MIN_ROUNDS)
                 .saturating_mul(threads);
             let range =
                 progress.next..nodes.min(progress.next.saturating_add(bands.saturating_mul(band_len)));
