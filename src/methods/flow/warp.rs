@@ -6,7 +6,10 @@
 
 use super::field::FlowField;
 use crate::core::sample::sample_bicubic;
-use crate::core::{Edge, Error, Image, Result};
+use crate::core::{Edge, Error, Image, Result, parallel};
+
+/// Rows in a piece of the warp that runs on one thread.
+const WARP_ROWS: usize = 16;
 
 /// The warped frame and, per pixel, whether its source lay inside the old frame (1) or outside
 /// it (0; the colour was clamped from the border). With `Edge::Wrap` every source is inside.
@@ -51,28 +54,39 @@ impl Warping {
     }
 
     /// Makes up to `count` more rows (of the same `frame` and `flow` as every call); returns
-    /// whether every row is made.
+    /// whether every row is made. Each pixel is its own sample, so the rows run in parallel
+    /// pieces with the same result.
     pub fn rows(&mut self, frame: &Image, flow: &FlowField, edge: Edge, count: usize) -> bool {
         let (w, h, c) = (frame.width(), frame.height(), frame.channels());
         let (max_x, max_y) = ((w - 1) as f32, (h - 1) as f32);
-        let mut px = [0.0f32; 4];
-        let end = (self.next_row + count).min(h);
+        let (start, end) = (self.next_row, (self.next_row + count).min(h));
         let Warped { image, inside } = &mut self.warped;
-        for y in self.next_row..end {
-            for x in 0..w {
-                let (vx, vy) = flow.at(x, y);
-                let (sx, sy) = (x as f32 - vx, y as f32 - vy);
-                // Half a pixel of slack: a source on the border pixel's outer half is still
-                // inside.
-                let outside =
-                    !(-0.5..=max_x + 0.5).contains(&sx) || !(-0.5..=max_y + 0.5).contains(&sy);
-                if edge == Edge::Clamp && outside {
-                    inside[y * w + x] = 0.0;
+        let mut rows: Vec<(&mut [f32], &mut [f32])> = image
+            .data_mut()
+            .chunks_mut(w * c)
+            .zip(inside.chunks_mut(w))
+            .skip(start)
+            .take(end - start)
+            .collect();
+        parallel::for_each_piece_mut(&mut rows, WARP_ROWS, |piece, rows| {
+            let mut px = [0.0f32; 4];
+            for (k, (colours, inside)) in rows.iter_mut().enumerate() {
+                let y = start + piece * WARP_ROWS + k;
+                for x in 0..w {
+                    let (vx, vy) = flow.at(x, y);
+                    let (sx, sy) = (x as f32 - vx, y as f32 - vy);
+                    // Half a pixel of slack: a source on the border pixel's outer half is
+                    // still inside.
+                    let outside = !(-0.5..=max_x + 0.5).contains(&sx)
+                        || !(-0.5..=max_y + 0.5).contains(&sy);
+                    if edge == Edge::Clamp && outside {
+                        inside[x] = 0.0;
+                    }
+                    sample_bicubic(frame, sx, sy, edge, &mut px);
+                    colours[x * c..(x + 1) * c].copy_from_slice(&px[..c]);
                 }
-                sample_bicubic(frame, sx, sy, edge, &mut px);
-                image.pixel_mut(x, y).copy_from_slice(&px[..c]);
             }
-        }
+        });
         self.next_row = end;
         self.done()
     }

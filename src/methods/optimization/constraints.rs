@@ -19,7 +19,10 @@
 //! where m = 1), and the M-step query is left as it is: the E-step already put c there.
 //! Inpainting holds the known pixels of an image so.
 
-use crate::core::{Error, Image, Result};
+use crate::core::{Error, Image, Result, parallel};
+
+/// Pixels in a piece of [`Constraint::add_to_e_step`] that runs on one thread.
+const E_STEP_PIXELS: usize = 1 << 14;
 use crate::solvers::nn::FeatureMap;
 
 /// Soft constraints at full output resolution, as the caller gave them.
@@ -232,29 +235,40 @@ impl Constraint {
     /// constrained minimiser, and the same arrays feed the screened Poisson solve.
     pub fn add_to_e_step(&self, colour: &mut [f32], weight: &mut [f32]) {
         let c = self.target.channels();
-        let target = self.target.data();
-        if self.lambda == f32::INFINITY {
-            // Hard: colour / weight becomes (1 - m) * average + m * c, the weight unchanged.
-            for (i, (&m, &w)) in self.mask.iter().zip(weight.iter()).enumerate() {
-                if m > 0.0 {
-                    for k in 0..c {
-                        let v = &mut colour[i * c + k];
-                        *v = (1.0 - m) * *v + m * w * target[i * c + k];
+        let (target, mask, lambda) = (self.target.data(), &self.mask[..], self.lambda);
+        // Per pixel, so in parallel pieces of pixels.
+        let mut pieces: Vec<(&mut [f32], &mut [f32])> = colour
+            .chunks_mut(E_STEP_PIXELS * c)
+            .zip(weight.chunks_mut(E_STEP_PIXELS))
+            .collect();
+        parallel::for_each_piece_mut(&mut pieces, 1, |p, piece| {
+            let (colour, weight) = &mut piece[0];
+            let first = p * E_STEP_PIXELS;
+            let mask = &mask[first..first + weight.len()];
+            let target = &target[first * c..(first + weight.len()) * c];
+            if lambda == f32::INFINITY {
+                // Hard: colour / weight becomes (1 - m) * average + m * c, the weight unchanged.
+                for (i, (&m, &w)) in mask.iter().zip(weight.iter()).enumerate() {
+                    if m > 0.0 {
+                        for k in 0..c {
+                            let v = &mut colour[i * c + k];
+                            *v = (1.0 - m) * *v + m * w * target[i * c + k];
+                        }
                     }
                 }
+                return;
             }
-            return;
-        }
-        for (i, (&m, w)) in self.mask.iter().zip(weight.iter_mut()).enumerate() {
-            let lm = self.lambda * m;
-            if lm > 0.0 {
-                let extra = lm * *w;
-                for k in 0..c {
-                    colour[i * c + k] += extra * target[i * c + k];
+            for (i, (&m, w)) in mask.iter().zip(weight.iter_mut()).enumerate() {
+                let lm = lambda * m;
+                if lm > 0.0 {
+                    let extra = lm * *w;
+                    for k in 0..c {
+                        colour[i * c + k] += extra * target[i * c + k];
+                    }
+                    *w += extra;
                 }
-                *w += extra;
             }
-        }
+        });
     }
 
     /// The terms that turn a gathered neighbourhood query and its weights into the M-step's

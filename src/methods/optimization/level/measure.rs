@@ -4,7 +4,10 @@
 //! of searching.
 
 use super::{LevelSetup, LevelSolver};
-use crate::core::Image;
+use crate::core::{Image, parallel};
+
+/// Nodes in a piece of the measure that runs on one thread.
+const MEASURE_NODES: usize = 4096;
 use crate::methods::optimization::e_step::edge;
 use crate::methods::optimization::features::feature_map;
 use crate::methods::optimization::queries::GridQueries;
@@ -31,37 +34,44 @@ impl LevelSolver {
     pub(super) fn measure_distances(&mut self, map: &FeatureMap, texture: bool) {
         let LevelSetup { wrap, size, .. } = self.setup;
         let space = self.matcher.space();
-        let mut query = Query::new(space.vector_len());
         let plain = || {
             GridQueries::new(map, (&self.cols, &self.rows), size, wrap)
                 .transformed(self.wavelet.as_ref())
         };
+        let matches = &self.matches[..];
+        // One distance per node, so in parallel pieces of nodes.
         if texture {
-            let mut queries = plain();
-            for (n, d) in self.distances.iter_mut().enumerate() {
-                let m = self.matches[n];
-                *d = match queries.in_place(n) {
-                    Some(rows) => space.distance_in_place(rows, space.weights(), m, f32::INFINITY),
-                    None => {
-                        queries.fill(n, &mut query);
-                        query.distance(space, m, f32::INFINITY)
-                    }
-                };
-            }
+            parallel::for_each_piece_mut(&mut self.distances, MEASURE_NODES, |p, piece| {
+                let mut queries = plain();
+                let mut query = Query::new(space.vector_len());
+                for (k, d) in piece.iter_mut().enumerate() {
+                    let n = p * MEASURE_NODES + k;
+                    let m = matches[n];
+                    *d = match queries.in_place(n) {
+                        Some(rows) => {
+                            space.distance_in_place(rows, space.weights(), m, f32::INFINITY)
+                        }
+                        None => {
+                            queries.fill(n, &mut query);
+                            query.distance(space, m, f32::INFINITY)
+                        }
+                    };
+                }
+            });
         }
         if self.wavelet.is_some() {
             // Parseval: the unweighted distance of transformed (windowed) vectors is the
             // fall-off weighted pixel distance.
-            let mut queries = plain();
-            for (n, d) in self.pixel_distances.iter_mut().enumerate() {
-                queries.fill(n, &mut query);
-                *d = space.distance_with(
-                    &query.values,
-                    &self.unit_weights,
-                    self.matches[n],
-                    f32::INFINITY,
-                );
-            }
+            let unit = &self.unit_weights[..];
+            parallel::for_each_piece_mut(&mut self.pixel_distances, MEASURE_NODES, |p, piece| {
+                let mut queries = plain();
+                let mut query = Query::new(space.vector_len());
+                for (k, d) in piece.iter_mut().enumerate() {
+                    let n = p * MEASURE_NODES + k;
+                    queries.fill(n, &mut query);
+                    *d = space.distance_with(&query.values, unit, matches[n], f32::INFINITY);
+                }
+            });
         }
     }
 }
