@@ -14,7 +14,7 @@ use super::schema::{
     DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, kind_field, output_size,
 };
 use super::session::{JsSession, js_session};
-use crate::core::{Error, from_rgba8};
+use crate::core::{Error, Image, from_rgba8};
 use crate::methods::optimization::SoftConstraints;
 use crate::methods::optimization::level::LevelSolver;
 use crate::methods::optimization::session::Phase;
@@ -110,6 +110,12 @@ pub(crate) const SCHEMA: Schema = Schema {
             kind: Kind::Number,
             default: Some("1"),
             doc: "How far the output's colour histogram is matched to the exemplar's (0..1).",
+        },
+        Opt {
+            key: "channelWeights",
+            kind: Kind::Numbers,
+            default: Some("[]"),
+            doc: "Weight of each exemplar channel in the match distance, one per channel ([] weighs all 1); a channel of weight 0 follows the matches without steering them. Pixel energy only.",
         },
         Opt {
             key: "energy",
@@ -235,6 +241,11 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
         histogram_matching: js
             .number("histogramMatching")?
             .map_or(d.histogram_matching, |v| v as f32),
+        channel_weights: js
+            .numbers("channelWeights")?
+            .map_or(d.channel_weights, |v| {
+                v.into_iter().map(|w| w as f32).collect()
+            }),
     };
     js.finish()?;
     Ok(options)
@@ -282,6 +293,9 @@ pub(crate) fn phase_name(phase: Phase) -> &'static str {
 pub struct TextureOptimization {
     session: Session,
     exemplars: ExemplarList,
+    /// The guides given (`setGuides`, `addGuidedExemplar`): a source guide per exemplar, the
+    /// target guide and the weight, kept to make the session again over a longer list.
+    guides: Option<(Vec<Image>, Image, f32)>,
 }
 
 js_session!(TextureOptimization);
@@ -325,6 +339,7 @@ impl TextureOptimization {
         Ok(TextureOptimization {
             session: Session::new(exemplar.image(), options)?,
             exemplars: ExemplarList::new(exemplar.image()),
+            guides: None,
         })
     }
 
@@ -333,10 +348,12 @@ impl TextureOptimization {
     /// Returns its index, as `renderSourcesInto` colours it.
     #[wasm_bindgen(js_name = addExemplar)]
     pub fn add_exemplar(&mut self, exemplar: &Exemplar) -> JsResult<u32> {
-        if self.session.has_guides() {
+        if self.guides.is_some() {
             return Err(Error::InvalidParameter {
                 name: "addExemplar",
-                reason: "guides need a session of one exemplar; this one has guides".into(),
+                reason: "this session has guides: add the exemplar with its source guide, \
+                         addGuidedExemplar(exemplar, sourceGuide)"
+                    .into(),
             }
             .into());
         }
@@ -351,7 +368,8 @@ impl TextureOptimization {
     /// size), with the same channels, add `weight ||g_source - g_target||^2` to the M-step's
     /// distance (1: a guide value counts as much as a colour value). Style transfer: the
     /// exemplar's luminance as the source guide, a photo's as the target guide. Before the
-    /// first step, with the pixel energy and one exemplar.
+    /// first step, with the pixel energy; with several exemplars, before adding them with
+    /// `addGuidedExemplar`.
     #[wasm_bindgen(js_name = setGuides)]
     pub fn set_guides(
         &mut self,
@@ -359,9 +377,39 @@ impl TextureOptimization {
         target_guide: &Exemplar,
         weight: f64,
     ) -> JsResult<()> {
-        Ok(self
-            .session
-            .set_guides(source_guide.image(), target_guide.image(), weight as f32)?)
+        let (source, target) = (source_guide.image(), target_guide.image());
+        self.session.set_guides(source, target, weight as f32)?;
+        self.guides = Some((vec![source.clone()], target.clone(), weight as f32));
+        Ok(())
+    }
+
+    /// Adds an exemplar with its source guide (the exemplar's size, the guides' channels) to a
+    /// guided session (`setGuides` first): each match compares the guide of the exemplar it
+    /// lies in with the target guide. Before the first step. Returns the exemplar's index, as
+    /// `renderSourcesInto` colours it.
+    #[wasm_bindgen(js_name = addGuidedExemplar)]
+    pub fn add_guided_exemplar(
+        &mut self,
+        exemplar: &Exemplar,
+        source_guide: &Exemplar,
+    ) -> JsResult<u32> {
+        let Some((sources, target, weight)) = &self.guides else {
+            return Err(Error::InvalidParameter {
+                name: "addGuidedExemplar",
+                reason: "give the guides first: setGuides(sourceGuide, targetGuide, weight)".into(),
+            }
+            .into());
+        };
+        let list = self.exemplars.with(exemplar.image())?;
+        let mut sources = sources.clone();
+        sources.push(source_guide.image().clone());
+        let mut session = Session::with_exemplars(&list, self.session.options().clone())?;
+        session.set_constraints(self.session.constraints().cloned())?;
+        session.set_exemplar_guides(&sources, target, *weight)?;
+        self.session = session;
+        let (target, weight) = (target.clone(), *weight);
+        self.guides = Some((sources, target, weight));
+        Ok(self.exemplars.keep(list))
     }
 
     /// Which exemplar each output pixel's nearest match lies in, each in its own colour (as

@@ -56,3 +56,58 @@ test('bad guides are refused by name', () => {
   assert.throws(() => s.setGuides(source, target, 1), /before the first step/);
   for (const o of [s, exemplar, source, target]) o.free();
 });
+
+test('several exemplars take a source guide each', () => {
+  // Two exemplars with flat source guides of 0 and 255: a target guide dark on the left and
+  // bright on the right draws the left from the first exemplar and the right from the second.
+  const [a, b] = [tinyExemplar(32, 'gravel_64'), tinyExemplar(32, 'tiles_64')];
+  const [ga, gb] = [grey(32, 32, () => 0), grey(32, 32, () => 255)];
+  const target = grey(48, 40, (x) => (x < 24 ? 0 : 255));
+  const s = new api.TextureOptimization(a, { outputWidth: 48, outputHeight: 40, neighbourhoodSizes: [8, 4], seed: 2 });
+  assert.throws(() => s.addGuidedExemplar(b, gb), /setGuides/);
+  s.setGuides(ga, target, 4);
+  assert.throws(() => s.addExemplar(b), /addGuidedExemplar/);
+  assert.throws(() => s.addGuidedExemplar(b, grey(16, 16, () => 0)), /sourceGuide.*16x16/);
+  assert.equal(s.addGuidedExemplar(b, gb), 1);
+  [...s];
+  const sources = new Uint8ClampedArray(48 * 40 * 4);
+  s.renderSourcesInto(sources);
+  // The sources view colours each exemplar; count the pixels whose colour is the second's.
+  const second = sources.slice(((40 >> 1) * 48 + 47) * 4, ((40 >> 1) * 48 + 47) * 4 + 4);
+  const share = (x0, x1) => {
+    let [same, n] = [0, 0];
+    for (let i = 0; i < 48 * 40; i++) {
+      if (i % 48 < x0 || i % 48 >= x1) continue;
+      n++;
+      if (second.every((v, k) => sources[i * 4 + k] === v)) same++;
+    }
+    return same / n;
+  };
+  assert.ok(share(0, 16) < 0.1 && share(32, 48) > 0.9, `second exemplar: left ${share(0, 16)}, right ${share(32, 48)}`);
+  for (const o of [s, a, b, ga, gb, target]) o.free();
+});
+
+test('channel weights: a channel of weight 0 does not steer the matches', () => {
+  // RGBA exemplars that differ only in alpha give the same colours when alpha weighs 0.
+  const base = tinyExemplar(32, 'gravel_64').toRgba();
+  const withAlpha = (seed) => {
+    const rgba = base.slice();
+    for (let i = 0; i < 32 * 32; i++) rgba[i * 4 + 3] = (i * 7919 * seed) % 251;
+    return api.Exemplar.fromRgba(rgba, 32, 32);
+  };
+  const run = (exemplar, channelWeights) => {
+    const s = new api.TextureOptimization(exemplar, { outputWidth: 40, outputHeight: 40, neighbourhoodSizes: [8, 4], start: 'patches', channelWeights });
+    [...s];
+    const out = new Uint8ClampedArray(40 * 40 * 4);
+    s.renderInto(out);
+    s.free();
+    return out.filter((_, i) => i % 4 !== 3).join();
+  };
+  const [one, two] = [withAlpha(1), withAlpha(3)];
+  assert.equal(one.channels, 4);
+  assert.equal(run(one, [1, 1, 1, 0]), run(two, [1, 1, 1, 0]));
+  assert.notEqual(run(one, [1, 1, 1, 1]), run(two, [1, 1, 1, 1]));
+  assert.throws(() => new api.TextureOptimization(one, { channelWeights: [1, 1] }), /channelWeights.*\(4\)/);
+  assert.throws(() => new api.TextureOptimization(one, { channelWeights: [0, 0, 0, 0] }), /channelWeights/);
+  for (const o of [one, two]) o.free();
+});

@@ -48,7 +48,7 @@ export const SESSIONS = {
       outputWidth: SIZE, outputHeight: SIZE, seed: SEED, levels: COUNT, neighbourhoodSizes: COUNTS,
       iterations: COUNT, r: REAL, mu: REAL, mStepMu: REAL, search: enumOf('patchmatch', 'kmeans-tree', 'exact'),
       tileable: BOOL, completeness: REAL, histogramMatching: REAL,
-      energy: enumOf('pixels', 'haar', 'daubechies'), waveletDetailWeight: REAL, start: enumOf('graphcut', 'patches'),
+      energy: enumOf('pixels', 'haar', 'daubechies'), waveletDetailWeight: REAL, start: enumOf('graphcut', 'patches'), channelWeights: REALS,
       memoryBudgetMiB: BUDGET,
     },
   },

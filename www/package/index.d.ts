@@ -147,9 +147,19 @@ export class TextureOptimization implements Steppable<TextureOptimizationEvent> 
    * Guided synthesis: `sourceGuide` (the exemplar's size) and `targetGuide` (the output's size),
    * with the same channels, add `weight ||g_source - g_target||^2` to the search's distance.
    * Style transfer: the exemplar's luminance as the source guide, a photo's as the target's.
+   * With several exemplars, set the guides first, then add each exemplar with its own source
+   * guide (`addGuidedExemplar`).
    * @throws {TexsynthError} after the first step, sizes or channels that differ, a bad weight.
    */
   setGuides(sourceGuide: Exemplar, targetGuide: Exemplar, weight: number): void;
+  /**
+   * Adds an exemplar with its source guide (the exemplar's size, the guides' channels) to a
+   * guided session, before the first step; returns its index. Each match compares the guide of
+   * the exemplar it lies in with the target guide.
+   * @throws {TexsynthError} without `setGuides` first, after the first step, a guide of the
+   *   wrong size or channels.
+   */
+  addGuidedExemplar(exemplar: Exemplar, sourceGuide: Exemplar): number;
   transferInto(other: Exemplar, target: RgbaTarget): void;
   renderInto(target: RgbaTarget): void;
   /** The colour-coded offset map (red = exemplar x, green = exemplar y). */

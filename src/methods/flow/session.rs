@@ -8,6 +8,7 @@ use super::memory::{METHOD, frames_working_set};
 use super::options::{FlowOptions, FlowSource};
 use super::setup::FrameSetup;
 use crate::core::{Error, Image, Result, Rng};
+use crate::methods::optimization::channel_weights::ChannelWeights;
 use crate::methods::optimization::constraints::Constraint;
 use crate::methods::optimization::iteration::{Iteration, Phase, StepBudget, Work};
 use crate::methods::optimization::level::{LevelSetup, LevelSolver};
@@ -172,6 +173,7 @@ impl FlowSession {
                     match_constrained: true,
                     energy: crate::methods::optimization::Energy::Pixels,
                     wavelet_detail_weight: 0.0,
+                    channel_weights: ChannelWeights::default(),
                 };
                 if options.sub_pixel {
                     LevelSolver::with_sub_pixel_matches(exemplar, setup, &mut rng)

@@ -4,6 +4,7 @@
 //! flow-guided animation both drive it.
 
 use super::constraints::{Constraint, QueryTerms};
+use super::channel_weights::ChannelWeights;
 use super::e_step::{Matches, Sums, robust_weights};
 use super::features::{append_guide, feature_map};
 use super::histogram::{Scratch, SortedChannels};
@@ -61,6 +62,8 @@ pub struct LevelSetup {
     pub energy: Energy,
     /// Weight of the wavelet detail bands (see [`super::wavelet_energy`]).
     pub wavelet_detail_weight: f32,
+    /// Weight of each colour channel in the M-step's distance (pixel energies).
+    pub channel_weights: ChannelWeights,
 }
 
 #[cfg(test)]
@@ -85,6 +88,7 @@ impl LevelSetup {
             match_constrained: false,
             energy: Energy::Pixels,
             wavelet_detail_weight: 1.0,
+            channel_weights: ChannelWeights::default(),
         }
     }
 }
@@ -229,6 +233,12 @@ impl LevelSolver {
                 })
             }
         };
+        let mut space = space;
+        if wavelet.is_none() && !setup.channel_weights.is_uniform() {
+            let colour_dims = if setup.search_mu > 0.0 { 3 } else { 1 } * exemplar.channels();
+            let dims = space.exemplar().dims;
+            space.weigh_dims(&setup.channel_weights.per_dim(exemplar.channels(), colour_dims, dims));
+        }
         let matcher = Matcher::over(space, setup.search, rng).with_passes(setup.passes);
         let cols = grid_axis(setup.output_width, setup.size, setup.spacing, setup.wrap);
         let rows = grid_axis(setup.output_height, setup.size, setup.spacing, setup.wrap);

@@ -3,6 +3,7 @@
 //! best output for fixed matches) and an M-step (the best matches for a fixed output), with
 //! robust IRLS weights, an optional gradient energy, and a coarse-to-fine schedule.
 
+pub mod channel_weights;
 pub mod constraints;
 pub mod e_step;
 pub mod exemplars;
@@ -24,6 +25,8 @@ pub mod session;
 pub mod teaching;
 pub mod wavelet_energy;
 
+#[cfg(test)]
+mod channel_weight_tests;
 #[cfg(test)]
 mod guide_tests;
 #[cfg(test)]

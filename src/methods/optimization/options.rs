@@ -75,6 +75,10 @@ pub struct Options {
     /// The memory budget in MiB (see `crate::core::budget`): the constructor refuses an
     /// output whose working set would exceed it. Default: 1024.
     pub memory_budget_mib: usize,
+    /// The weight of each exemplar channel in the M-step's distance (see
+    /// `super::channel_weights`), one per channel; empty weighs every channel 1. A channel of
+    /// weight 0 follows the matches without steering them. Pixel energy only. Default: empty.
+    pub channel_weights: Vec<f32>,
 }
 
 impl Default for Options {
@@ -97,6 +101,7 @@ impl Default for Options {
             wavelet_detail_weight: DEFAULT_DETAIL_WEIGHT,
             start: Start::Graphcut,
             memory_budget_mib: DEFAULT_MEMORY_BUDGET_MIB,
+            channel_weights: Vec::new(),
         }
     }
 }
@@ -196,6 +201,16 @@ impl Options {
             return invalid(
                 "waveletDetailWeight",
                 format!("must be between 0 and 1000, got {w}"),
+            );
+        }
+        if self.energy != Energy::Pixels && !self.channel_weights.is_empty() {
+            return invalid(
+                "channelWeights",
+                format!(
+                    "weigh the pixel energy's channels; energy '{}' compares wavelet \
+                     coefficients",
+                    self.energy.name()
+                ),
             );
         }
         if self.energy != Energy::Pixels

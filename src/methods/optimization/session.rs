@@ -6,6 +6,7 @@ mod inputs;
 mod maps;
 mod several;
 
+use super::channel_weights::ChannelWeights;
 use super::constraints::{Constraint, SoftConstraints};
 
 use super::e_step::edge;
@@ -130,6 +131,8 @@ pub struct Session {
     several: Option<Several>,
     /// Source and target guides ([`Session::set_guides`]).
     guides: Option<Guides>,
+    /// The options' channel weights, checked against the exemplar's channels.
+    channel_weights: ChannelWeights,
 }
 
 impl Session {
@@ -172,6 +175,7 @@ impl Session {
             }
         };
         Ok(Session {
+            channel_weights: ChannelWeights::new(&options.channel_weights, exemplar.channels())?,
             start: None,
             start_set,
             given_start: None,
@@ -496,6 +500,7 @@ impl Session {
             match_constrained: false,
             energy: self.options.energy,
             wavelet_detail_weight: self.options.wavelet_detail_weight,
+            channel_weights: self.channel_weights,
         };
         let exemplar = &self.exemplars[lv.octave];
         let mut solver = match &self.guides {

@@ -373,6 +373,16 @@ impl Neighbourhoods {
         self.size * self.size * self.exemplar.dims
     }
 
+    /// Multiplies the weight of every value of feature dimension `d` by `per_dim[d]` (one
+    /// factor per dimension of the exemplar's feature map): a weighted distance per channel.
+    pub fn weigh_dims(&mut self, per_dim: &[f32]) {
+        let dims = self.exemplar.dims;
+        assert_eq!(per_dim.len(), dims, "one factor per dimension");
+        for (i, w) in self.weights.iter_mut().enumerate() {
+            *w *= per_dim[i % dims];
+        }
+    }
+
     /// The per-value weights (Gaussian fall-off), `vector_len()` long.
     #[must_use]
     pub fn weights(&self) -> &[f32] {
