@@ -2,7 +2,7 @@
 //! sources at positions, paint which output pixels must come from which source, then `step()`
 //! lays the sources down one by one, each with the seam the graph cut finds.
 
-use js_sys::Uint8ClampedArray;
+use js_sys::{Uint8ClampedArray, Uint32Array};
 use wasm_bindgen::prelude::*;
 
 use super::error::JsResult;
@@ -217,6 +217,24 @@ impl GraphcutMerge {
             Some(m) => write_rgba(&seam_overlay(&m.synthesis().canvas), target),
             None => write_rgba(&vec![0; self.width * self.height * 4], target),
         }
+    }
+
+    /// How many output pixels each source shows so far, by `addSource`'s index (all 0 before
+    /// the first step).
+    #[wasm_bindgen(js_name = sourcePixels)]
+    pub fn source_pixels(&self) -> Uint32Array {
+        let mut counts = vec![0u32; self.sources.len()];
+        if let Some(m) = &self.merge {
+            let synthesis = m.synthesis();
+            for i in 0..self.width * self.height {
+                if let Some(patch) = synthesis.patch_of(i)
+                    && let Some(c) = counts.get_mut(patch.source as usize)
+                {
+                    *c += 1;
+                }
+            }
+        }
+        Uint32Array::from(&counts[..])
     }
 
     /// Which source each pixel shows, one colour per source.

@@ -64,11 +64,11 @@ export const EXPLANATIONS = {
     cite: [KWATRA_2003, 'section 6, Image Synthesis', 'the Image Synthesis section and Figure 5'],
   },
   'mg-start': {
-    text: 'Interactive merging: two images are laid down as patches and the graph cut finds the seam between them. Painted pixels become constraint arcs of infinite capacity to one image or the other, so the cut must route around them.',
+    text: 'Interactive merging: the images are laid down as patches, one after another, and each graph cut finds the seam between the new image and what is there. Painted pixels become constraint arcs of infinite capacity to the image they are painted for, so the cut must route around them.',
     cite: [KWATRA_2003, 'section 3 (constraint arcs, Figure 2) and section 6, Image Synthesis (interactive merging, Figure 6)', 'the paragraph "Consider the graph shown in Figure 2(right)..." on constraint arcs'],
   },
   'mg-done': {
-    text: 'Merged: the red seam is the minimum cut between the two images that respects the paint. Repaint and run again to move it.',
+    text: 'Merged: the red seams are the minimum cuts between the images that respect the paint. Repaint and run again to move them.',
     cite: [KWATRA_2003, 'section 6 and Figure 6', 'the caption of Figure 6 (the merged banner)'],
   },
   'fl-first': {

@@ -304,6 +304,8 @@ export class GraphcutMerge implements Steppable<GraphcutMergeEvent> {
   renderInto(target: RgbaTarget): void;
   renderSeamsInto(target: RgbaTarget): void;
   renderSourcesInto(target: RgbaTarget): void;
+  /** How many output pixels each source shows so far, by `addSource`'s index. */
+  sourcePixels(): Uint32Array;
   /** Records each step's seam graph for `placementGraph()` (off by default). */
   setAnatomy(on: boolean): void;
   /** The last step's seam graph, painted pixels as its constraint nodes (kind 3: held to the

@@ -1,63 +1,116 @@
-// The "Graph-cut merge" panel (Kwatra et al. 2003, section 6.B): the exemplar and a second image
-// overlap; paint which pixels must come from which image, then watch the graph cut lay the
-// second image over the first along the cheapest seam that honours the paint.
+// The "Graph-cut merge" panel (Kwatra et al. 2003, section 6.B): the exemplar and up to seven
+// more images, each placed at an (x, y) position, overlap; paint which pixels must come from
+// which image, then watch the graph cut lay each image over the earlier ones along the
+// cheapest seam that honours the paint. The list of images, its URL field and the paint rule
+// are in merge-sources.js.
 import { Exemplar } from '../pkg/texsynth.js';
 import { drawInto, drawOverlay } from '../lib/canvas.js';
-import { SAMPLES } from '../lib/samples.js';
 import { explain } from '../lib/explain.js';
 import { paintable, unpaintable } from '../lib/keyboard-brush.js';
 import { remoteSession } from '../lib/worker.js';
 import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
+import {
+  boxAround, carryPaint, COLOURS, DEFAULT_SOURCES, defaultSource, MAX_SOURCES, mayPaint, paintedPerSource,
+  paintInto, parseSources, readSourceRows, removeFromPaint, sampleUrl, serialiseSources,
+  showSourceRows, sourceRowsHtml,
+} from './merge-sources.js';
 
-// The placement anatomy's graph view without its cost maps: the user placed the image, so no
+// The placement anatomy's graph view without its cost maps: the user placed the images, so no
 // offset was searched or drawn.
 const GRAPH_HTML = ANATOMY_HTML.replace(/<h3>Where could[\s\S]*?(?=<h3>The graph)/, '');
 
 export const id = 'merge';
 export const title = 'Graph-cut merge';
 
-const PAINT = [null, [80, 170, 255, 150], [255, 120, 60, 150]];
+const OPTIONS_HTML = `
+  <input id="mg-sources" type="hidden" value="${serialiseSources(DEFAULT_SOURCES)}">
+  ${sourceRowsHtml()}
+  <span class="views">brush:
+    <label><input type="radio" name="mg-brush" class="view" value="0"> erase</label>
+    <label>size <input id="mg-size" class="view" type="number" value="6" min="1" max="40" step="1"></label>
+  </span>
+  <button id="mg-clear" type="button">Clear paint</button>
+  <label title="the graph whose minimum cut is the seam, with the paint as its constraint nodes"><input id="mg-anatomy-on" type="checkbox"> graph view</label>`;
+
+const START = 'paint on the image, then Run or Step';
+
+// Every step brings back the result and its seams; the last also how many pixels each source
+// gave.
+const VIEWS = ['renderInto', 'renderSeamsInto'];
 
 export function createPanel(ui) {
   let merge = null; // the mirror of the merge in the page's worker
   let pending = null;
-  let second = null;
+  let lastEvent = null;
+  let sources = DEFAULT_SOURCES.map((s) => ({ ...s }));
+  const images = new Map(); // sample id -> its decoded Exemplar
+  const loads = new Map(); // sample id -> the promise of its decoding
   let mask = null;
-  let layout = null;
+  let layout = null; // the output box around the sources (merge-sources.js boxAround)
   let painting = false;
   let mounted = true;
+  const layers = new WeakMap(); // Exemplar -> a canvas with its pixels, for the preview
   const anatomyOn = () => ui.$('mg-anatomy-on')?.checked ?? false;
 
-  function optionsHtml() {
-    const choices = SAMPLES.map((s) => `<option value="${s.url}" ${s.id === 'sand_128' ? 'selected' : ''}>${s.label}</option>`).join('');
-    return `
-      <label>Second image <select id="mg-second">${choices}</select></label>
-      <label title="horizontal position of the second image">offset x <input id="mg-offset" type="number" value="64" min="0" max="512" step="1"></label>
-      <span class="views">brush:
-        <label><input type="radio" name="mg-brush" class="view" value="1" checked> first</label>
-        <label><input type="radio" name="mg-brush" class="view" value="2"> second</label>
-        <label><input type="radio" name="mg-brush" class="view" value="0"> erase</label>
-        <label>size <input id="mg-size" class="view" type="number" value="6" min="1" max="40" step="1"></label>
-      </span>
-      <button id="mg-clear" type="button">Clear paint</button>
-      <label title="the graph whose minimum cut is the seam, with the paint as its constraint nodes"><input id="mg-anatomy-on" type="checkbox"> graph view</label>`;
+  const imageOf = (k) => (k === 0 ? ui.exemplar() : images.get(sources[k].sample));
+  const ready = () => Boolean(ui.exemplar()) && sources.every((_, k) => imageOf(k));
+
+  /** Fetches and decodes the samples the list names that are not decoded yet. */
+  function loadImages() {
+    const wanted = new Set(sources.slice(1).map((s) => s.sample));
+    return Promise.all([...wanted].map((sample) => {
+      if (!loads.has(sample)) {
+        const load = (async () => {
+          const bytes = new Uint8Array(await (await fetch(sampleUrl(sample))).arrayBuffer());
+          const image = Exemplar.fromBytes(bytes);
+          // The fetch may end after the panel was left: nothing will draw or free it then.
+          if (mounted) images.set(sample, image);
+          else image.free();
+        })();
+        loads.set(sample, load);
+        load.catch(() => loads.delete(sample));
+      }
+      return loads.get(sample);
+    }));
   }
 
-  async function loadSecond() {
-    const bytes = new Uint8Array(await (await fetch(ui.$('mg-second').value)).arrayBuffer());
-    second?.free();
-    second = Exemplar.fromBytes(bytes);
-  }
-
+  /** The box around the sources, with the image of each; the paint stays where it lies among
+   * them (merge-sources.js). */
   function computeLayout() {
-    const first = ui.exemplar();
-    const offset = Math.max(0, Math.round(Number(ui.$('mg-offset').value)) || 0);
-    const width = Math.max(first.width, offset + second.width);
-    const height = Math.max(first.height, second.height);
-    if (!layout || layout.width !== width || layout.height !== height || layout.offset !== offset) {
-      layout = { width, height, offset };
-      mask = new Uint8Array(width * height);
-    }
+    const placed = sources.map((s, k) => ({ x: s.x, y: s.y, image: imageOf(k) }));
+    const box = boxAround(placed.map(({ x, y, image }) => ({ x, y, width: image.width, height: image.height })));
+    mask = carryPaint(mask, layout, box);
+    layout = { ...box, images: placed.map((p) => p.image) };
+  }
+
+  /** Writes the list into its URL field and its rows; the field's change resets the panel (the
+   * page listens to it) and loads any new image. */
+  function commit() {
+    const field = ui.$('mg-sources');
+    field.value = serialiseSources(sources);
+    showSourceRows(ui.$, sources);
+    field.dispatchEvent(new Event('change', { bubbles: true }));
+  }
+
+  function addSource() {
+    if (sources.length >= MAX_SOURCES) return;
+    sources.push(defaultSource(sources.length));
+    commit();
+    ui.$(`mg-source-${sources.length - 1}`).querySelector('.mg-image').focus();
+  }
+
+  function removeSource(k) {
+    sources.splice(k, 1);
+    if (mask) removeFromPaint(mask, k + 1);
+    // The brush follows its source up the list; the removed source's brush gives way to image 1's.
+    const value = Number(document.querySelector('input[name="mg-brush"]:checked')?.value);
+    const brush = value === k + 1 ? 1 : value > k + 1 ? value - 1 : value;
+    const radio = document.querySelector(`input[name="mg-brush"][value="${brush}"]`);
+    if (radio) radio.checked = true;
+    commit();
+    // Focus stays in the list: on the row that moved up, or on "Add image".
+    const next = ui.$(`mg-source-${k}`);
+    (next && !next.hidden ? next.querySelector('.mg-remove') : ui.$('mg-add')).focus();
   }
 
   /** Frees the merge in the worker (after whatever step is in flight) and forgets it. */
@@ -65,108 +118,134 @@ export function createPanel(ui) {
     pending?.then((m) => m.free(), () => {});
     pending = null;
     merge = null;
+    lastEvent = null;
   }
 
   /** Makes the merge in the page's worker (www/lib/worker.js); `merge` is its mirror. */
   async function build() {
     computeLayout();
     drop();
+    const { width, height, rects, images: placed } = layout;
+    const constraints = mask;
     const current = (pending = (async () => {
-      const wanted = () => ({ views: ['renderInto', 'renderSeamsInto'], calls: anatomyOn() ? ['placementGraph'] : [] });
-      const made = await remoteSession('GraphcutMerge', [{ outputWidth: layout.width, outputHeight: layout.height, gradientCost: true }], wanted);
+      const calls = () => (anatomyOn() ? ['placementGraph'] : []);
+      const wanted = () => ({ views: VIEWS, calls: calls(), finalCalls: [...calls(), 'sourcePixels'] });
+      const made = await remoteSession('GraphcutMerge', [{ outputWidth: width, outputHeight: height, gradientCost: true }], wanted);
       if (anatomyOn()) await made.send('setAnatomy', true);
-      await made.send('addSource', { exemplar: ui.exemplar() }, 0, 0);
-      await made.send('addSource', { exemplar: second }, layout.offset, 0);
-      await made.send('setConstraints', mask);
+      for (const [k, rect] of rects.entries()) await made.send('addSource', { exemplar: placed[k] }, rect.x, rect.y);
+      await made.send('setConstraints', constraints);
       return made;
     })());
-    const made = await current;
+    let made;
+    try {
+      made = await current;
+    } catch (error) {
+      if (pending !== current) return null; // reset or left while it was being made
+      pending = null;
+      throw error;
+    }
     if (pending !== current) return null;
     merge = made;
     return merge;
   }
 
-  function draw() {
-    const canvas = ui.outputCanvas;
-    if (!layout) return;
-    canvas.width = layout.width;
-    canvas.height = layout.height;
-    const ctx = canvas.getContext('2d');
-    ctx.clearRect(0, 0, layout.width, layout.height);
-    if (merge && merge.done) {
-      drawInto(canvas, merge);
-      drawOverlay(canvas, layout.width, layout.height, (b) => merge.view('renderSeamsInto', b));
-    } else {
-      // Preview: both sources where they are placed, the second half-transparent.
-      for (const [source, x, alpha] of [[ui.exemplar(), 0, 1], [second, layout.offset, 0.55]]) {
-        const layer = document.createElement('canvas');
-        drawInto(layer, source);
-        ctx.globalAlpha = alpha;
-        ctx.drawImage(layer, x, 0);
-        ctx.globalAlpha = 1;
-      }
+  function layerOf(image) {
+    if (!layers.has(image)) {
+      const layer = document.createElement('canvas');
+      drawInto(layer, image);
+      layers.set(image, layer);
     }
-    drawOverlay(canvas, layout.width, layout.height, (buffer) => {
-      mask.forEach((m, i) => PAINT[m] && buffer.set(PAINT[m], i * 4));
-    });
+    return layers.get(image);
   }
 
-  /**
-   * Whether a pixel may be painted for image `value` (1: the first, 2: the second): inside that
-   * image, and for the second not on its edge where the first image lies on both sides (the merge
-   * refuses such paint: the seam cannot reach it). The brush leaves such pixels unpainted.
-   */
-  function mayPaint(value, x, y) {
-    const first = ui.exemplar();
-    const rects = [null, [0, 0, first.width, first.height], [layout.offset, 0, second.width, second.height]];
-    const inside = (k, px, py) => {
-      const [rx, ry, rw, rh] = rects[k];
-      return px >= rx && py >= ry && px < rx + rw && py < ry + rh;
-    };
-    if (!inside(value, x, y)) return false;
-    if (value === 1 || !inside(1, x, y)) return true;
-    return ![[1, 0], [-1, 0], [0, 1], [0, -1]].some(([dx, dy]) => {
-      const nx = x + dx;
-      const ny = y + dy;
-      const inOutput = nx >= 0 && ny >= 0 && nx < layout.width && ny < layout.height;
-      return inOutput && !inside(2, nx, ny) && inside(1, nx, ny);
-    });
+  function outlineSource(ctx, k, dash = []) {
+    const r = layout.rects[k];
+    ctx.save();
+    ctx.strokeStyle = `rgb(${COLOURS[k].join(' ')})`;
+    ctx.setLineDash(dash);
+    ctx.strokeRect(r.x + 0.5, r.y + 0.5, r.width - 1, r.height - 1);
+    ctx.restore();
+  }
+
+  // A view as the worker sent it (no copy), or a copy of it.
+  const view = (name) => merge.imageData(name) ?? ((b) => merge.view(name, b));
+
+  function draw() {
+    if (!layout) return;
+    const canvas = ui.outputCanvas;
+    const { width, height, rects } = layout;
+    canvas.width = width;
+    canvas.height = height;
+    const ctx = canvas.getContext('2d');
+    ctx.clearRect(0, 0, width, height);
+    if (merge && lastEvent) {
+      // The composite so far with its seams; the sources still to come outlined, dashed.
+      drawInto(canvas, merge);
+      drawOverlay(canvas, width, height, view('renderSeamsInto'));
+      if (!merge.done) for (let k = lastEvent.source + 1; k < rects.length; k++) outlineSource(ctx, k, [4, 3]);
+    } else {
+      // Preview: every source where it is placed, the later ones half-transparent, outlined in
+      // its brush colour.
+      rects.forEach((r, k) => {
+        ctx.globalAlpha = k === 0 ? 1 : 0.55;
+        ctx.drawImage(layerOf(layout.images[k]), r.x, r.y);
+      });
+      ctx.globalAlpha = 1;
+      rects.forEach((_, k) => outlineSource(ctx, k));
+    }
+    drawOverlay(canvas, width, height, (buffer) => paintInto(buffer, mask));
+  }
+
+  /** The painted pixels per source, for tests. */
+  function showPainted() {
+    if (mask) ui.$('mg-readout').dataset.painted = paintedPerSource(mask, sources.length).join(',');
   }
 
   function paintAt(event) {
+    if (!layout) return;
     const canvas = ui.outputCanvas;
     const box = canvas.getBoundingClientRect();
     const x = Math.floor(((event.clientX - box.left) / box.width) * layout.width);
     const y = Math.floor(((event.clientY - box.top) / box.height) * layout.height);
-    const value = Number(document.querySelector('input[name="mg-brush"]:checked').value);
+    const value = Number(document.querySelector('input[name="mg-brush"]:checked')?.value ?? 1);
+    if (value > sources.length) return;
     const r = Number(ui.$('mg-size').value) || 6;
     for (let dy = -r; dy <= r; dy++) {
       for (let dx = -r; dx <= r; dx++) {
         const px = x + dx;
         const py = y + dy;
         if (dx * dx + dy * dy > r * r || px < 0 || py < 0 || px >= layout.width || py >= layout.height) continue;
-        if (value !== 0 && !mayPaint(value, px, py)) continue;
+        // Paint the merge would refuse is left off (merge-sources.js mayPaint).
+        if (value !== 0 && !mayPaint(layout, value, px, py)) continue;
         mask[py * layout.width + px] = value;
       }
     }
     // New paint means a new merge: the old result no longer honours it.
     drop();
     delete document.body.dataset.mergeDone;
+    showPainted();
     draw();
+  }
+
+  function readout(event) {
+    if (!event.done) return `image ${event.source + 1} laid down`;
+    const counts = Array.from(merge.result('sourcePixels') ?? []);
+    // The pixels each image gave the result, for the reader and for tests.
+    ui.$('mg-readout').dataset.sourcePixels = counts.join(',');
+    return `merged · cut cost ${event.cutCost.toFixed(2)} · pixels from each image: ${counts.map((n, k) => `${k + 1}: ${n}`).join(' · ')}`;
   }
 
   return {
     id,
     title,
-    get optionsHtml() {
-      return optionsHtml();
-    },
-    ownsOutputSize: 'the merge is as large as the two images side by side',
+    optionsHtml: OPTIONS_HTML,
+    ownsOutputSize: 'the merge is as large as the box around its images, placed side by side or anywhere',
     ownsSeed: 'the merge places each image where it is and draws nothing at random',
-    sideHtml: `<div class="readout" id="mg-readout">paint on the image, then Run or Step</div>
+    sideHtml: `<div class="readout" id="mg-readout">${START}</div>
       <div class="explain" id="mg-explain" data-history-text aria-live="polite"></div>
-      <p class="legend">Blue paint: must come from the first image (the exemplar). Orange: from the second.
-      Red lines: the seam the graph cut chose.</p>
+      <p class="legend">Each image has its colour (the swatch in its row): its outline in the preview, and
+      the paint for pixels that must come from it. Image 1 is the exemplar; each later image is laid
+      over the earlier ones. Red lines: the seams the graph cut chose.</p>
       ${GRAPH_HTML}`,
     mount() {
       const canvas = ui.outputCanvas;
@@ -175,32 +254,61 @@ export function createPanel(ui) {
       this.onPointerUp = () => { painting = false; };
       window.addEventListener('pointerup', this.onPointerUp);
       paintable(canvas, 'Paint which image each pixel must come from');
-      ui.$('mg-clear').addEventListener('click', () => { mask?.fill(0); drop(); draw(); });
+      ui.$('mg-clear').addEventListener('click', () => {
+        mask?.fill(0);
+        drop();
+        delete document.body.dataset.mergeDone;
+        showPainted();
+        draw();
+      });
       // The graph is recorded from the merge's first step: toggling it starts the merge over.
       ui.$('mg-anatomy-on').addEventListener('change', () => this.reset());
-      ui.$('mg-second').addEventListener('change', async () => { await loadSecond(); layout = null; if (mounted) this.reset(); });
-      // The fetch may end after the panel was left, when its elements are gone.
-      loadSecond().then(() => mounted && this.reset());
+      // The field changes from a link (the page's URL state) or from the rows (commit); the
+      // page's own listener then resets the panel, and the reset loads any new image.
+      const field = ui.$('mg-sources');
+      field.addEventListener('change', () => {
+        sources = parseSources(field.value);
+        showSourceRows(ui.$, sources);
+      });
+      const list = ui.$('mg-sources-list');
+      list.addEventListener('change', (event) => {
+        if (!event.target.matches('.mg-image, .mg-x, .mg-y')) return; // the brush radios
+        sources = readSourceRows(ui.$);
+        commit();
+      });
+      list.addEventListener('click', (event) => {
+        const row = event.target.closest('.mg-remove')?.closest('[data-source]');
+        if (row) removeSource(Number(row.dataset.source));
+      });
+      ui.$('mg-add').addEventListener('click', addSource);
+      showSourceRows(ui.$, sources);
     },
     unmount() {
       mounted = false;
+      const building = pending;
+      drop();
+      // The images go once the merge's set-up, which sends them to the worker, is over.
+      Promise.resolve(building).catch(() => {}).finally(() => {
+        for (const image of images.values()) image.free();
+        images.clear();
+      });
       const canvas = ui.outputCanvas;
       canvas.onpointerdown = canvas.onpointermove = null;
       window.removeEventListener('pointerup', this.onPointerUp);
       unpaintable(canvas);
     },
     async step() {
-      if (!second) return null;
+      await loadImages();
+      if (!mounted || !ready()) return null;
       const current = merge ?? (await build());
       if (!current || current.done) return null;
       const event = await current.step();
       return current === merge ? event : null; // repainted or reset while the step ran
     },
     onStep(event) {
+      lastEvent = event;
       draw();
-      ui.$('mg-readout').textContent = event.done
-        ? `merged · cut cost ${event.cutCost.toFixed(2)}`
-        : `source ${event.source + 1} laid down`;
+      ui.$('mg-readout').textContent = readout(event);
       explain(ui.$('mg-explain'), event.done ? 'mg-done' : 'mg-start');
       if (anatomyOn()) showPlacementAnatomy(ui.$, null, merge?.result('placementGraph'));
       if (event.done) document.body.dataset.mergeDone = 'true';
@@ -210,13 +318,20 @@ export function createPanel(ui) {
       const section = ui.$('gc-anatomy');
       if (section) section.hidden = !anatomyOn();
       delete document.body.dataset.mergeDone;
-      if (second && ui.exemplar()) {
-        computeLayout();
-        draw();
-      }
-      const readout = ui.$('mg-readout');
-      if (readout) readout.textContent = 'paint on the image, then Run or Step';
+      const readoutEl = ui.$('mg-readout');
+      if (!readoutEl) return;
+      delete readoutEl.dataset.sourcePixels;
       explain(ui.$('mg-explain'), 'mg-start');
+      if (!ready()) {
+        readoutEl.textContent = ui.exemplar() ? 'loading the images…' : START;
+        // The images decoded, the reset draws them (unless the panel was left meanwhile).
+        if (ui.exemplar()) loadImages().then(() => mounted && ready() && this.reset(), (error) => ui.showError(`could not load an image: ${error.message ?? error}`));
+        return;
+      }
+      computeLayout();
+      showPainted();
+      draw();
+      readoutEl.textContent = START;
     },
   };
 }
