@@ -102,6 +102,12 @@ fn a_merge_honours_painted_constraints() {
             "row {y}: painted pixel takes the second source"
         );
     }
+    // Every pixel comes from one source: the tiles at least up to their paint, the sand at
+    // least from its paint to the right edge.
+    let counts = merge.source_pixels().to_vec();
+    assert_eq!(counts.len(), 2);
+    assert_eq!(counts[0] + counts[1], (w * h) as u32);
+    assert!(counts[0] >= (41 * h) as u32 && counts[1] >= ((w - 62) * h) as u32);
     merge.render_into(&target).unwrap();
     merge.render_seams_into(&target).unwrap();
     assert!(error_message(merge.set_constraints(&[0; 5])).contains("constraint mask"));
