@@ -125,6 +125,9 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                 start: optimization::Start::from_name(*u.choose(&["graphcut", "patches"])?)
                     .expect("known"),
                 memory_budget_mib: BUDGET_MIB,
+                channel_weights: (0..u.int_in_range(0..=5)?)
+                    .map(|_| real(u, 1.0, v))
+                    .collect::<Result<_>>()?,
             };
             if let Ok(mut s) = optimization::Session::new(ex, o) {
                 for _ in 0..steps {
