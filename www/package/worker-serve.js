@@ -111,16 +111,26 @@ export function serve(lib, { post, listen }) {
   };
   const reply = (id, body, transfer = []) => post({ id, ...body }, transfer);
   const fail = (id, error) => reply(id, { type: 'error', message: error?.message ?? String(error), name: error?.name ?? 'Error' });
-  // A message to itself lets a waiting message (a pause) in between two steps without the
-  // 4 ms that a browser adds to nested setTimeout calls: a run of short steps would otherwise
-  // spend much of its time waiting.
-  const channel = new MessageChannel();
+  // Between two steps the worker lets waiting messages (a pause) in. In Node, setImmediate
+  // does that without delay. A browser clamps nested setTimeout calls to 4 ms, which a run of
+  // short steps would spend much of its time waiting on, so there the worker mostly posts a
+  // message to itself, which queues behind the messages already waiting, and takes a timer at
+  // least every TIMER_MS so that no scheduler can starve the incoming messages.
+  const TIMER_MS = 200;
+  const channel = typeof setImmediate === 'function' ? null : new MessageChannel();
   const waiting = [];
-  channel.port1.onmessage = () => waiting.shift()?.();
-  channel.port1.unref?.(); // Node: the port alone does not keep a worker alive
+  if (channel) channel.port1.onmessage = () => waiting.shift()?.();
+  let lastTimer = 0;
   const yieldNow = () => new Promise((r) => {
-    waiting.push(r);
-    channel.port2.postMessage(0);
+    if (!channel) {
+      setImmediate(r);
+    } else if (performance.now() - lastTimer >= TIMER_MS) {
+      lastTimer = performance.now();
+      setTimeout(r, 0);
+    } else {
+      waiting.push(r);
+      channel.port2.postMessage(0);
+    }
   });
 
   async function run(id, sid, session, { render = 'renderInto', every = 1 } = {}) {

@@ -64,10 +64,13 @@ fn a_channel_of_weight_0_follows_the_matches_without_steering_them() {
 }
 
 /// Channel `c` of `image` alone.
+#[cfg(not(target_arch = "wasm32"))]
 fn plane(image: &Image, c: usize) -> Image {
     Image::from_fn(image.width(), image.height(), 1, |x, y, _| image.pixel(x, y)[c]).unwrap()
 }
 
+// The coherence measure is native only.
+#[cfg(not(target_arch = "wasm32"))]
 #[test]
 fn a_heavier_channel_is_followed_more_closely() {
     // Colours from one texture, the fourth channel from another: the matches cannot suit
