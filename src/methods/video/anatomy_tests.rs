@@ -212,3 +212,38 @@ fn matching_draws_offsets_of_low_ssd() {
     );
     assert_eq!(below_median, matched, "every draw below its slice's median");
 }
+
+#[test]
+fn constrained_frames_are_matched_under_matching() {
+    // Frames larger than the input: 7.D's first k frames take several patches, the first at
+    // the origin. Under matching the others are drawn by eq. 3 from their SSD, as 7.C's are.
+    let options = Options {
+        mode: Mode::Extend,
+        output_width: Some(28),
+        output_height: Some(24),
+        output_frames: Some(12),
+        fixed_frames: Some(3),
+        placement: Placement::Matching,
+        seed: 3,
+        ..Options::default()
+    };
+    let mut s = Session::new(waves(14, 12, 8, 5).unwrap(), options).unwrap();
+    s.set_anatomy(true);
+    s.step().unwrap(); // the origin: the input's own first frames
+    for step in 1..4 {
+        s.step().unwrap();
+        let slice = s
+            .placement_costs()
+            .unwrap_or_else(|| panic!("step {step}: a matched placement has its costs"));
+        let surface = &slice.surface;
+        let (cx, cy) = surface.chosen.expect("the drawn offset is on its slice");
+        let drawn = surface.cost[cy * surface.width + cx];
+        let mut finite: Vec<f32> = surface.cost.iter().copied().filter(|c| c.is_finite()).collect();
+        finite.sort_by(f32::total_cmp);
+        assert!(finite.len() >= 10, "step {step}: {} finite costs", finite.len());
+        assert!(
+            drawn <= finite[finite.len() / 2],
+            "step {step}: the draw lies below its slice's median"
+        );
+    }
+}

@@ -380,6 +380,18 @@ impl Session {
         };
         let chosen = if s.canvas.patches.is_empty() {
             Some(origin)
+        } else if self.options.placement == Placement::Matching {
+            // Around the first patch the constrained frames are matched like any other patch
+            // (7.C over the k frames): the offset drawn by eq. 3 from the SSD with what is laid.
+            let scored = s.score_offsets(region, allowed, &self.used)?;
+            let k_sigma = (self.options.k, self.sigma);
+            let chosen = draw_offset(&scored, k_sigma, &mut self.rng);
+            if s.record_anatomy {
+                let temperature = f64::from(k_sigma.0) * f64::from(k_sigma.1).powi(2);
+                self.last_costs =
+                    chosen.and_then(|p| cost_slice(&scored, p, allowed.spatial, temperature));
+            }
+            chosen
         } else {
             s.random_offset(region, allowed, &self.used, &mut self.rng)
         };
