@@ -14,7 +14,7 @@ impl LevelSolver {
         self.summing.is_some()
     }
 
-    /// The share of the running E-step's nodes summed (None when none runs).
+    /// The share of the running E-step's bands of output rows summed (None when none runs).
     #[must_use]
     pub fn e_step_fraction(&self) -> Option<f64> {
         self.summing
