@@ -382,15 +382,10 @@ impl Session {
             Some(origin)
         } else if self.options.placement == Placement::Matching {
             // Around the first patch the constrained frames are matched like any other patch
-            // (7.C over the k frames): the offset drawn by eq. 3 from the SSD with what is laid.
-            let scored = s.score_offsets(region, allowed, &self.used)?;
+            // (7.C over the k frames).
             let k_sigma = (self.options.k, self.sigma);
-            let chosen = draw_offset(&scored, k_sigma, &mut self.rng);
-            if s.record_anatomy {
-                let temperature = f64::from(k_sigma.0) * f64::from(k_sigma.1).powi(2);
-                self.last_costs =
-                    chosen.and_then(|p| cost_slice(&scored, p, allowed.spatial, temperature));
-            }
+            let (chosen, costs) = matched_offset(s, (region, allowed), &self.used, k_sigma, &mut self.rng)?;
+            self.last_costs = costs;
             chosen
         } else {
             s.random_offset(region, allowed, &self.used, &mut self.rng)
@@ -464,14 +459,9 @@ impl Session {
             }
             Placement::Random => s.random_offset(region, allowed, &self.used, &mut self.rng),
             Placement::Matching => {
-                let scored = s.score_offsets(region, allowed, &self.used)?;
                 let k_sigma = (self.options.k, self.sigma);
-                let chosen = draw_offset(&scored, k_sigma, &mut self.rng);
-                if s.record_anatomy {
-                    let temperature = f64::from(k_sigma.0) * f64::from(k_sigma.1).powi(2);
-                    self.last_costs =
-                        chosen.and_then(|p| cost_slice(&scored, p, allowed.spatial, temperature));
-                }
+                let (chosen, costs) = matched_offset(s, (region, allowed), &self.used, k_sigma, &mut self.rng)?;
+                self.last_costs = costs;
                 chosen
             }
         };
@@ -550,4 +540,23 @@ fn region_side(
         y.min(output.1),
         third(input.2).min(output.2),
     )
+}
+
+/// A placement by matching (7.C): every unused offset allowed over `region` scored by its SSD
+/// with what is laid, one drawn by eq. 3 with `k_sigma`; with the cost slice of the draw when
+/// `s` records its anatomy.
+fn matched_offset(
+    s: &Synthesis,
+    (region, allowed): (Region, Allowed),
+    used: &HashSet<Patch>,
+    k_sigma: (f32, f32),
+    rng: &mut Rng,
+) -> Result<(Option<Patch>, Option<CostSlice>)> {
+    let scored = s.score_offsets(region, allowed, used)?;
+    let chosen = draw_offset(&scored, k_sigma, rng);
+    let costs = s.record_anatomy.then(|| {
+        let temperature = f64::from(k_sigma.0) * f64::from(k_sigma.1).powi(2);
+        chosen.and_then(|p| cost_slice(&scored, p, allowed.spatial, temperature))
+    });
+    Ok((chosen, costs.flatten()))
 }
