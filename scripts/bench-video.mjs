@@ -1,7 +1,8 @@
 #!/usr/bin/env node
 // Graph-cut video textures as wasm in Node, on the demo clip (www/samples/clips/water.png, made by
 // scripts/make-demo-clip.mjs): a 128x128x60 loop (goal: at most 10 s) and a spatial extension of
-// 96x96x30 to 192x192x60 (goal: at most 30 s), with random and matching placement. Needs pkg/
+// 96x96x30 to 192x192x60 (goal: at most 30 s), with random, sub-patch and entire-patch placement
+// (the last has no goal: its search spans twice the clip along each axis). Needs pkg/
 // (./scripts/build.sh). The 3-D FFT search against direct SSD is in the native
 // `cargo run --profile explore -p texsynth-bench --bin video_bench`.
 //   node scripts/bench-video.mjs [--seed 1]
@@ -38,7 +39,8 @@ function clip(side, frames) {
 const cases = [
   { name: 'loop 128x128x60', side: 128, frames: 60, options: { mode: 'loop' }, goal: 10 },
   { name: 'extend 96x96x30 -> 192x192x60, random', side: 96, frames: 30, options: { mode: 'extend', outputWidth: 192, outputHeight: 192, outputFrames: 60, placement: 'random' }, goal: 30 },
-  { name: 'extend 96x96x30 -> 192x192x60, matching', side: 96, frames: 30, options: { mode: 'extend', outputWidth: 192, outputHeight: 192, outputFrames: 60, placement: 'matching' }, goal: 30 },
+  { name: 'extend 96x96x30 -> 192x192x60, sub-patch', side: 96, frames: 30, options: { mode: 'extend', outputWidth: 192, outputHeight: 192, outputFrames: 60, placement: 'sub-patch' }, goal: 30 },
+  { name: 'extend 96x96x30 -> 192x192x60, entire-patch', side: 96, frames: 30, options: { mode: 'extend', outputWidth: 192, outputHeight: 192, outputFrames: 60, placement: 'entire-patch' }, goal: '-' },
 ];
 
 console.log(`wasm (Node ${process.version}) graph-cut video textures on the demo clip, seed ${seed}`);

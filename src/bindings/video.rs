@@ -117,9 +117,9 @@ pub(crate) const SCHEMA: Schema = Schema {
         ),
         Opt {
             key: "placement",
-            kind: Kind::Choice(&["random", "matching"]),
+            kind: Kind::Choice(&["random", "entire-patch", "sub-patch", "matching"]),
             default: Some("'random'"),
-            doc: "'random', or 'matching' (7.C: 3-D FFT SSD of the error region against every translation, eq. 3).",
+            doc: "'random'; 'entire-patch' (eq. 2: the SSD of the whole clip at every translation that covers the error region, over all it overlaps, by 3-D FFT, drawn by eq. 3); or 'sub-patch' (7.C: the SSD of the error region against every translation, eq. 4). 'matching' is 'sub-patch'.",
         },
         SEED,
         Opt {

@@ -77,30 +77,33 @@ fn the_demo_clip_loops_without_a_jump() {
 #[wasm_bindgen_test]
 fn a_spatial_extension_covers_every_voxel() {
     let clip = demo_clip(12, 8);
-    let mut video = VideoTextures::new(
-        &clip,
-        options(&[
-            ("mode", "extend".into()),
-            ("outputWidth", 24.into()),
-            ("outputHeight", 20.into()),
-            ("outputFrames", 16.into()),
-            ("fixedFrames", 0.into()),
-        ]),
-    )
-    .unwrap();
-    let mut steps = 0;
-    while !video.done() {
-        video.step().unwrap();
-        steps += 1;
-        assert!(steps < 2000);
-    }
-    assert_eq!(
-        (video.width(), video.height(), video.frames()),
-        (24, 20, 16)
-    );
-    for t in 0..16 {
-        let frame = video.frame(t).unwrap().to_vec();
-        assert!(frame.chunks(4).all(|p| p[3] == 255));
+    for placement in ["random", "entire-patch", "sub-patch"] {
+        let mut video = VideoTextures::new(
+            &clip,
+            options(&[
+                ("mode", "extend".into()),
+                ("placement", placement.into()),
+                ("outputWidth", 24.into()),
+                ("outputHeight", 20.into()),
+                ("outputFrames", 16.into()),
+                ("fixedFrames", 0.into()),
+            ]),
+        )
+        .unwrap();
+        let mut steps = 0;
+        while !video.done() {
+            video.step().unwrap();
+            steps += 1;
+            assert!(steps < 2000, "{placement}");
+        }
+        assert_eq!(
+            (video.width(), video.height(), video.frames()),
+            (24, 20, 16)
+        );
+        for t in 0..16 {
+            let frame = video.frame(t).unwrap().to_vec();
+            assert!(frame.chunks(4).all(|p| p[3] == 255), "{placement}");
+        }
     }
 }
 

@@ -191,7 +191,7 @@ test('the video panel shows a placement\'s cost slice with the drawn offset amon
   await page.fill('#vt-size', '32');
   await page.fill('#vt-frames', '16');
   await page.selectOption('#vt-mode', 'extend');
-  await page.selectOption('#vt-placement', 'matching');
+  await page.selectOption('#vt-placement', 'sub-patch');
   await page.fill('#vt-fixed', '0');
   await page.dispatchEvent('#vt-fixed', 'change');
   await page.check('#vt-anatomy-on');

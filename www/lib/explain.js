@@ -107,6 +107,10 @@ export const EXPLANATIONS = {
     text: 'A spatio-temporal patch: its offset (x, y, t) is drawn with probability exp(−C/(kσ²)) from the costs C of every translation that covers the error region, one 3-D FFT search (equation (4), section 5); its seam is a surface, the minimum cut of a graph over 6-connected voxels. Shown: the costs at the drawn time shift, and the graph in the frame of the patch with the most overlap.',
     cite: [KWATRA_2003, 'section 7 (C. Spatio-Temporally Stationary Videos), section 4 (sub-patch matching, equations (3) and (4)) and section 5 (FFT-based acceleration)', 'the paragraphs "C. Spatio-Temporally Stationary Videos..." and "Sub-patch matching: This is the most general of all our patch selection techniques..."'],
   },
+  'vt-place-entire': {
+    text: 'A spatio-temporal patch by entire-patch matching: its offset (x, y, t) is drawn with probability exp(−C/(kσ²)), where C is the squared difference between the whole clip at that offset and every covered voxel it overlaps, divided by the overlap (equation (2) in three dimensions), from one 3-D FFT search over all the offsets that cover the error region; its seam is a surface, the minimum cut of a graph over 6-connected voxels. Shown: the costs at the drawn time shift, and the graph in the frame of the patch with the most overlap.',
+    cite: [KWATRA_2003, 'section 4 (entire patch matching, equations (2) and (3)) and section 7', 'the paragraph on entire patch matching'],
+  },
   'vt-place-random': {
     text: 'A spatio-temporal patch at a random offset (section 7, B. Random Temporal Offsets, or a random spatial one): there is no cost surface to show, only its seam surface, the minimum cut of a graph over 6-connected voxels, shown in the frame of the patch with the most overlap.',
     cite: [KWATRA_2003, 'section 7 (B. Random Temporal Offsets) and section 3 (the graph, Figure 2)', 'the paragraph "B. Random Temporal Offsets: For very short sequences of video..."'],

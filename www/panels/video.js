@@ -37,7 +37,8 @@ const OPTIONS_HTML = `
   </select></label>
   <label>Placement <select id="vt-placement">
     <option value="random">random</option>
-    <option value="matching">spatio-temporal matching (7.C)</option>
+    <option value="entire-patch">entire-patch matching (eq. 2 in 3-D)</option>
+    <option value="sub-patch">sub-patch matching (7.C)</option>
   </select></label>
   <label title="output frames (offsets and extension; a loop is as long as its transition); 0: the default">out frames <input id="vt-out-frames" type="number" value="0" min="0" max="480" step="1"></label>
   <label id="vt-fixed-label" title="${FIXED_TITLE}">k <input id="vt-fixed" type="number" value="10" min="0" max="60" step="1"></label>
@@ -407,7 +408,8 @@ export function createPanel(ui) {
       await drawFrame(t);
       await drawSlice();
       drawAnatomy(event);
-      explain(ui.$('vt-explain'), !anatomyOn() ? 'vt-start' : session.result('placementCosts') ? 'vt-place' : 'vt-place-random');
+      const matched = ui.$('vt-placement').value === 'entire-patch' ? 'vt-place-entire' : 'vt-place';
+      explain(ui.$('vt-explain'), !anatomyOn() ? 'vt-start' : session.result('placementCosts') ? matched : 'vt-place-random');
       document.body.dataset.videoPatches = String(event.patchesPlaced);
       if (event.done) {
         await drawLoopPoint(event.loopFrame ?? -1);

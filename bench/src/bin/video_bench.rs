@@ -1,6 +1,7 @@
 //! Native benchmark of graph-cut video textures (section 7):
 //! `cargo run --profile explore -p texsynth-bench --bin video_bench`. On a procedural wave clip it times a
-//! 128x128x60 loop (7.A), a spatial extension of 96x96x30 to 192x192x60 (7.E with 7.D), and the
+//! 128x128x60 loop (7.A), a spatial extension of 96x96x30 to 192x192x60 (7.E with 7.D: random,
+//! entire-patch and sub-patch placement), and the
 //! 3-D FFT SSD search against a direct SSD on a small volume (correctness and speed).
 //! `scripts/bench-video.mjs` runs the first two as wasm in Node.
 
@@ -61,18 +62,29 @@ fn main() {
             ..Options::default()
         },
     );
-    run(
-        "extend 96x96x30 -> 192x192x60 matching",
-        waves(96, 96, 30, 1).unwrap(),
-        Options {
-            mode: Mode::Extend,
-            output_width: Some(192),
-            output_height: Some(192),
-            output_frames: Some(60),
-            placement: Placement::Matching,
-            ..Options::default()
-        },
-    );
+    for (label, placement) in [
+        (
+            "extend 96x96x30 -> 192x192x60 entire",
+            Placement::EntirePatch,
+        ),
+        (
+            "extend 96x96x30 -> 192x192x60 sub-patch",
+            Placement::SubPatch,
+        ),
+    ] {
+        run(
+            label,
+            waves(96, 96, 30, 1).unwrap(),
+            Options {
+                mode: Mode::Extend,
+                output_width: Some(192),
+                output_height: Some(192),
+                output_frames: Some(60),
+                placement,
+                ..Options::default()
+            },
+        );
+    }
     run(
         "offsets 64x64x20 -> 60 frames (7.B)",
         waves(64, 64, 20, 1).unwrap(),

@@ -1,5 +1,5 @@
 //! The placement anatomy of video textures: recording it changes no output, the cost slice is
-//! the direct area-normalised SSD of eq. 4 at the drawn time shift, and the graph slice agrees
+//! the direct area-normalised SSD of eq. 4 (or eq. 2) at the drawn time shift, and the graph slice agrees
 //! with what the placement took.
 
 use super::canvas::UNCOVERED;
@@ -26,7 +26,7 @@ fn session(placement: Placement) -> Session {
 
 #[test]
 fn recording_the_anatomy_changes_no_output() {
-    for placement in [Placement::Random, Placement::Matching] {
+    for placement in [Placement::Random, Placement::EntirePatch, Placement::SubPatch] {
         let mut plain = session(placement);
         let mut watched = session(placement);
         watched.set_anatomy(true);
@@ -46,10 +46,26 @@ fn recording_the_anatomy_changes_no_output() {
 /// so eq. 4's cost is the mean squared difference over its covered voxels.
 #[test]
 fn the_cost_slice_is_the_direct_ssd_at_the_drawn_time_shift() {
-    let mut s = session(Placement::Matching);
+    check_cost_slices(Placement::SubPatch);
+}
+
+/// Entire-patch matching's cost (eq. 2) is the mean squared difference over every covered voxel
+/// the whole clip overlaps at that offset, wherever it lies, not only in the error region.
+#[test]
+fn the_entire_patch_cost_is_the_direct_ssd_over_the_whole_overlap() {
+    check_cost_slices(Placement::EntirePatch);
+}
+
+fn check_cost_slices(placement: Placement) {
+    let mut s = session(placement);
     s.set_anatomy(true);
     s.step().unwrap();
     let source = s.synthesis().sources[0].volume.clone();
+    let clip = (
+        source.width() as i64,
+        source.height() as i64,
+        source.frames() as i64,
+    );
     let (mut slices, mut checked) = (0, 0);
     while !s.synthesis().canvas.is_covered() {
         let canvas = &s.synthesis().canvas;
@@ -77,7 +93,13 @@ fn the_cost_slice_is_the_direct_ssd_at_the_drawn_time_shift() {
             ),
             "the marked cell is the placed offset (no fixed frames: canvas = output frames)"
         );
-        let (ox, oy, ot) = region.origin;
+        // The voxels eq. 4 compares (the region), or eq. 2 (the whole output under the patch).
+        let (origin, extent) = if placement == Placement::EntirePatch {
+            ((0, 0, 0), size)
+        } else {
+            (region.origin, region.size)
+        };
+        let (ox, oy, ot) = origin;
         for gy in (0..c.height).step_by(2) {
             for gx in (0..c.width).step_by(2) {
                 let cost = c.cost[gy * c.width + gx];
@@ -86,14 +108,17 @@ fn the_cost_slice_is_the_direct_ssd_at_the_drawn_time_shift() {
                 }
                 let (tx, ty, tt) = (c.x + gx as i64, c.y + gy as i64, i64::from(slice.tt));
                 let (mut ssd, mut n) = (0.0f64, 0usize);
-                for f in ot..ot + region.size.2 {
-                    for y in oy..oy + region.size.1 {
-                        for x in ox..ox + region.size.0 {
+                for f in ot..ot + extent.2 {
+                    for y in oy..oy + extent.1 {
+                        for x in ox..ox + extent.0 {
                             let i = (f * h + y) * w + x;
-                            if label[i] == UNCOVERED {
+                            let (u, v, t) = (x as i64 - tx, y as i64 - ty, f as i64 - tt);
+                            let inside = (0..clip.0).contains(&u)
+                                && (0..clip.1).contains(&v)
+                                && (0..clip.2).contains(&t);
+                            if label[i] == UNCOVERED || !inside {
                                 continue;
                             }
-                            let (u, v, t) = (x as i64 - tx, y as i64 - ty, f as i64 - tt);
                             let k = source.index(u as usize, v as usize, t as usize);
                             ssd += pixels
                                 .voxel(i)
@@ -184,7 +209,13 @@ fn the_graph_slice_is_the_fullest_frame_and_matches_the_placement() {
 /// uniform draw would put it there, and on average well below the slice's median.
 #[test]
 fn matching_draws_offsets_of_low_ssd() {
-    let mut s = session(Placement::Matching);
+    for placement in [Placement::EntirePatch, Placement::SubPatch] {
+        draws_offsets_of_low_ssd(placement);
+    }
+}
+
+fn draws_offsets_of_low_ssd(placement: Placement) {
+    let mut s = session(placement);
     s.set_anatomy(true);
     let (mut matched, mut cheapest_tenth, mut below_median) = (0, 0, 0);
     while !s.is_done() {
@@ -204,26 +235,32 @@ fn matching_draws_offsets_of_low_ssd() {
         cheapest_tenth += usize::from(drawn <= finite[finite.len() / 10]);
         below_median += usize::from(drawn <= finite[finite.len() / 2]);
     }
-    assert!(matched >= 3, "{matched} matched placements");
+    assert!(matched >= 3, "{placement:?}: {matched} matched placements");
     // A uniform draw lands in the cheapest tenth one time in ten.
     assert!(
         cheapest_tenth * 2 >= matched,
-        "{cheapest_tenth} of {matched} draws in the cheapest tenth"
+        "{placement:?}: {cheapest_tenth} of {matched} draws in the cheapest tenth"
     );
-    assert_eq!(below_median, matched, "every draw below its slice's median");
+    assert_eq!(below_median, matched, "{placement:?}: every draw below its slice's median");
 }
 
 #[test]
 fn constrained_frames_are_matched_under_matching() {
     // Frames larger than the input: 7.D's first k frames take several patches, the first at
     // the origin. Under matching the others are drawn by eq. 3 from their SSD, as 7.C's are.
+    for placement in [Placement::EntirePatch, Placement::SubPatch] {
+        constrained_frames_are_matched(placement);
+    }
+}
+
+fn constrained_frames_are_matched(placement: Placement) {
     let options = Options {
         mode: Mode::Extend,
         output_width: Some(28),
         output_height: Some(24),
         output_frames: Some(12),
         fixed_frames: Some(3),
-        placement: Placement::Matching,
+        placement,
         seed: 3,
         ..Options::default()
     };
@@ -234,7 +271,7 @@ fn constrained_frames_are_matched_under_matching() {
         s.step().unwrap();
         let slice = s
             .placement_costs()
-            .unwrap_or_else(|| panic!("step {step}: a matched placement has its costs"));
+            .unwrap_or_else(|| panic!("{placement:?} step {step}: a matched placement has its costs"));
         let surface = &slice.surface;
         let (cx, cy) = surface.chosen.expect("the drawn offset is on its slice");
         let drawn = surface.cost[cy * surface.width + cx];
@@ -243,7 +280,7 @@ fn constrained_frames_are_matched_under_matching() {
         assert!(finite.len() >= 10, "step {step}: {} finite costs", finite.len());
         assert!(
             drawn <= finite[finite.len() / 2],
-            "step {step}: the draw lies below its slice's median"
+            "{placement:?} step {step}: the draw lies below its slice's median"
         );
     }
 }

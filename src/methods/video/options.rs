@@ -31,26 +31,38 @@ impl Mode {
     }
 }
 
-/// How offsets are chosen (section 4).
+/// How offsets are chosen (section 4), with the image version's names.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Placement {
     /// Any unused offset that covers the error region, uniformly (7.B's random offsets).
     #[default]
     Random,
-    /// Sub-patch matching in 3-D (7.C): the SSD of the error region against every translation of
-    /// the input by 3-D FFT, drawn by eq. 3.
-    Matching,
+    /// Entire-patch matching in 3-D (eq. 2): the SSD between the whole input clip at each
+    /// translation that covers the error region and every covered voxel it overlaps, divided by
+    /// the overlap, by 3-D FFT, drawn by eq. 3.
+    EntirePatch,
+    /// Sub-patch matching in 3-D (7.C, eq. 4): the SSD of the error region against every
+    /// translation of the input that covers it, by 3-D FFT, drawn by eq. 3.
+    SubPatch,
 }
 
 impl Placement {
-    /// The placement of a name used in options ("random", "matching"); `None` for another.
+    /// The placement of a name used in options ("random", "entire-patch", "sub-patch", and
+    /// "matching" for "sub-patch"); `None` for another.
     #[must_use]
     pub fn from_name(name: &str) -> Option<Placement> {
         match name {
             "random" => Some(Placement::Random),
-            "matching" => Some(Placement::Matching),
+            "entire-patch" => Some(Placement::EntirePatch),
+            "sub-patch" | "matching" => Some(Placement::SubPatch),
             _ => None,
         }
+    }
+
+    /// Whether offsets are drawn from their matching costs (eq. 3).
+    #[must_use]
+    pub fn is_matching(self) -> bool {
+        self != Placement::Random
     }
 }
 

@@ -1,7 +1,7 @@
 //! Choosing where the next spatio-temporal patch goes (section 4 in 3-D): an error region first
 //! (a box around the first uncovered voxel, or the box of largest seam error once covered), then
-//! an unused offset whose patch covers it, drawn at random (7.B, 7.E) or by sub-patch matching
-//! with the 3-D FFT SSD (7.C, eq. 4 with eq. 3).
+//! an unused offset whose patch covers it, drawn at random (7.B, 7.E) or by entire-patch (eq. 2)
+//! or sub-patch matching (7.C, eq. 4) with the 3-D FFT SSD, drawn by eq. 3.
 
 use std::collections::HashSet;
 
@@ -9,7 +9,8 @@ use super::canvas::{Patch, UNCOVERED};
 use super::synthesis::Synthesis;
 use super::volume::CHANNELS;
 use crate::core::{Result, Rng};
-use crate::solvers::fft_ssd::{VolumeView, volume_ssd_map};
+use crate::solvers::fft::smooth_size;
+use crate::solvers::fft_ssd::{VolumeRange, VolumeView, volume_ssd_map_range};
 
 /// A box of the output: origin and size along x, y, t.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -232,14 +233,49 @@ impl Synthesis {
         out
     }
 
-    /// Every unused offset covering `region` with its cost C(t) (eq. 4 / eq. 2, infinite where
-    /// the search does not reach); the costs are None while nothing in the region is covered
-    /// (nothing to match: the draw is uniform).
+    /// The output box a matching placement compares with the input, and the range of offsets
+    /// (relative to the box) its candidates take: the error region for sub-patch matching (eq.
+    /// 4), the union of the candidates' footprints, clamped to the output, for entire-patch
+    /// matching (eq. 2).
+    fn search_box(&self, region: Region, allowed: Allowed, whole: bool) -> (Region, VolumeRange) {
+        let r = self.offset_ranges(region, allowed);
+        let v = &self.sources[allowed.source as usize].volume;
+        let (w, h, d) = self.canvas.size();
+        let lens = [v.width(), v.height(), v.frames()];
+        let (out, origin, size) = ([w, h, d], region.origin, region.size);
+        let (origin, size) = if whole {
+            let axis = |a: usize| {
+                let lo = r[a].0.max(0) as usize;
+                let hi = ((r[a].1 + lens[a] as i64) as usize).min(out[a]);
+                (lo, hi - lo)
+            };
+            let (x, y, t) = (axis(0), axis(1), axis(2));
+            ((x.0, y.0, t.0), (x.1, y.1, t.1))
+        } else {
+            (origin, size)
+        };
+        let o = [origin.0 as i64, origin.1 as i64, origin.2 as i64];
+        let first = |a: usize| (r[a].0 - o[a]) as isize;
+        let count = |a: usize| (r[a].1 - r[a].0 + 1) as usize;
+        (
+            Region { origin, size },
+            VolumeRange {
+                first: (first(0), first(1), first(2)),
+                count: (count(0), count(1), count(2)),
+            },
+        )
+    }
+
+    /// Every unused offset covering `region` with its cost C(t) / A(t) (eq. 2 over the whole
+    /// overlap when `whole`, eq. 4 over the region otherwise; infinite where nothing overlaps);
+    /// the costs are None while nothing the search reads is covered (nothing to match: the draw
+    /// is uniform).
     pub fn score_offsets(
         &self,
         region: Region,
         allowed: Allowed,
         used: &HashSet<Patch>,
+        whole: bool,
     ) -> Result<Scored> {
         let candidates = self.candidates(region, allowed, used);
         if candidates.is_empty() {
@@ -249,8 +285,9 @@ impl Synthesis {
             });
         }
         let (w, h, _) = self.canvas.size();
-        let (rw, rh, rd) = region.size;
-        let (ox, oy, ot) = region.origin;
+        let (window, range) = self.search_box(region, allowed, whole);
+        let (rw, rh, rd) = window.size;
+        let (ox, oy, ot) = window.origin;
         let mut data = Vec::with_capacity(rw * rh * rd * CHANNELS);
         let mut weights = Vec::with_capacity(rw * rh * rd);
         for t in ot..ot + rd {
@@ -273,7 +310,7 @@ impl Synthesis {
             });
         }
         let source = &self.sources[allowed.source as usize].volume;
-        let map = volume_ssd_map(
+        let map = volume_ssd_map_range(
             VolumeView {
                 data: &data,
                 width: rw,
@@ -290,6 +327,7 @@ impl Synthesis {
                 channels: CHANNELS,
                 weights: None,
             },
+            range,
         )?;
         let costs: Vec<f64> = candidates
             .iter()
@@ -310,6 +348,31 @@ impl Synthesis {
             costs: Some(costs),
         })
     }
+}
+
+/// The largest 3-D transform a matching placement with error regions of `side` searches, for
+/// an `input` clip: along each axis the input's length for sub-patch matching, and the span of
+/// the candidates' footprints (twice the input less the region) for entire-patch matching, along
+/// the axes offsets move on (`spatial`: x and y too).
+#[must_use]
+pub fn largest_search(
+    whole: bool,
+    spatial: bool,
+    side: (usize, usize, usize),
+    input: (usize, usize, usize),
+) -> (usize, usize, usize) {
+    let span = |moves: bool, r: usize, len: usize| {
+        if whole && moves {
+            (2 * len).saturating_sub(r).max(len)
+        } else {
+            len
+        }
+    };
+    (
+        2 * smooth_size(span(spatial, side.0, input.0).div_ceil(2)),
+        smooth_size(span(spatial, side.1, input.1)),
+        smooth_size(span(true, side.2, input.2)),
+    )
 }
 
 /// The unused offsets a matching placement considered, with their costs (None: uniform).

@@ -16,7 +16,7 @@ use super::anatomy::{CostSlice, cost_slice};
 use super::budget::WorkingSet;
 use super::canvas::{Canvas, Patch, UNCOVERED};
 use super::options::{Mode, Options, Placement};
-use super::placement::{Allowed, Region, draw_offset, region_around};
+use super::placement::{Allowed, Region, draw_offset, largest_search, region_around};
 use super::source::Source;
 use super::synthesis::GraphSlice;
 use super::synthesis::Synthesis;
@@ -24,7 +24,7 @@ use super::transition::{Transition, best_transition, half_window};
 use super::volume::Volume;
 use crate::core::{Result, Rng};
 use crate::methods::graphcut::cost::value_sigma;
-use crate::solvers::fft_ssd::{volume_search_bytes, volume_transform_size};
+use crate::solvers::fft_ssd::volume_search_bytes;
 
 /// What a step did.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -129,9 +129,11 @@ impl Session {
             Mode::Offsets | Mode::Extend => {
                 let k = options.fixed();
                 let total = size.2 + k;
-                let search_bytes = if options.placement == Placement::Matching {
+                let search_bytes = if options.placement.is_matching() {
                     let side = region_side(input, (size.0, size.1, total), options.mode);
-                    let (nx, ny, nz) = volume_transform_size(side, input);
+                    let whole = options.placement == Placement::EntirePatch;
+                    let spatial = options.mode == Mode::Extend;
+                    let (nx, ny, nz) = largest_search(whole, spatial, side, input);
                     volume_search_bytes(nx * ny * nz)
                 } else {
                     0
@@ -380,11 +382,12 @@ impl Session {
         };
         let chosen = if s.canvas.patches.is_empty() {
             Some(origin)
-        } else if self.options.placement == Placement::Matching {
+        } else if self.options.placement.is_matching() {
             // Around the first patch the constrained frames are matched like any other patch
             // (7.C over the k frames).
             let k_sigma = (self.options.k, self.sigma);
-            let (chosen, costs) = matched_offset(s, (region, allowed), &self.used, k_sigma, &mut self.rng)?;
+            let search = (region, allowed, self.options.placement);
+            let (chosen, costs) = matched_offset(s, search, &self.used, k_sigma, &mut self.rng)?;
             self.last_costs = costs;
             chosen
         } else {
@@ -458,9 +461,10 @@ impl Session {
                 s.covering_offset(region, allowed, &self.used, &mut self.rng, COVERING_DRAWS)
             }
             Placement::Random => s.random_offset(region, allowed, &self.used, &mut self.rng),
-            Placement::Matching => {
+            Placement::EntirePatch | Placement::SubPatch => {
                 let k_sigma = (self.options.k, self.sigma);
-                let (chosen, costs) = matched_offset(s, (region, allowed), &self.used, k_sigma, &mut self.rng)?;
+                let search = (region, allowed, self.options.placement);
+                let (chosen, costs) = matched_offset(s, search, &self.used, k_sigma, &mut self.rng)?;
                 self.last_costs = costs;
                 chosen
             }
@@ -542,17 +546,18 @@ fn region_side(
     )
 }
 
-/// A placement by matching (7.C): every unused offset allowed over `region` scored by its SSD
-/// with what is laid, one drawn by eq. 3 with `k_sigma`; with the cost slice of the draw when
-/// `s` records its anatomy.
+/// A placement by matching (eq. 2 or 7.C's eq. 4, as `placement` says): every unused offset
+/// allowed over `region` scored by its SSD with what is laid, one drawn by eq. 3 with `k_sigma`;
+/// with the cost slice of the draw when `s` records its anatomy.
 fn matched_offset(
     s: &Synthesis,
-    (region, allowed): (Region, Allowed),
+    (region, allowed, placement): (Region, Allowed, Placement),
     used: &HashSet<Patch>,
     k_sigma: (f32, f32),
     rng: &mut Rng,
 ) -> Result<(Option<Patch>, Option<CostSlice>)> {
-    let scored = s.score_offsets(region, allowed, used)?;
+    let whole = placement == Placement::EntirePatch;
+    let scored = s.score_offsets(region, allowed, used, whole)?;
     let chosen = draw_offset(&scored, k_sigma, rng);
     let costs = s.record_anatomy.then(|| {
         let temperature = f64::from(k_sigma.0) * f64::from(k_sigma.1).powi(2);

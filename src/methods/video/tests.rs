@@ -217,7 +217,7 @@ fn equal_frames_fix_the_inputs_own_first_frames() {
 
 #[test]
 fn the_spatially_extended_output_has_the_requested_size_and_no_uncovered_voxel() {
-    for placement in [Placement::Random, Placement::Matching] {
+    for placement in [Placement::Random, Placement::EntirePatch, Placement::SubPatch] {
         let options = Options {
             mode: Mode::Extend,
             output_width: Some(26),

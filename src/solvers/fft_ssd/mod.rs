@@ -29,8 +29,8 @@ mod volume;
 
 use transform::Transform;
 pub use volume::{
-    MAX_VOLUME_TRANSFORM_VALUES, VolumeSsdMap, VolumeView, volume_search_bytes, volume_ssd_map,
-    volume_transform_size,
+    MAX_VOLUME_TRANSFORM_VALUES, VolumeRange, VolumeSsdMap, VolumeView, volume_range_transform_size,
+    volume_search_bytes, volume_ssd_map, volume_ssd_map_range, volume_transform_size,
 };
 
 use crate::solvers::fft::{Complex, correlate_spectra, smooth_size};
@@ -279,13 +279,8 @@ impl SsdSearch {
                 reason: format!("is empty ({cx}x{cy} offsets)"),
             });
         }
-        let need = |len: usize, first: isize, count: usize, patch: usize| -> usize {
-            let last = first + count as isize - 1;
-            let below = (len as isize - first.min(0)).max(len as isize);
-            below.max(last + patch as isize).max(1) as usize
-        };
-        let nx = 2 * smooth_size(need(ow, range.first.0, cx, pw).div_ceil(2));
-        let ny = smooth_size(need(oh, range.first.1, cy, ph));
+        let nx = 2 * smooth_size(range_length(ow, range.first.0, cx, pw).div_ceil(2));
+        let ny = smooth_size(range_length(oh, range.first.1, cy, ph));
         self.correlate(output, patch, (nx, ny), (cx, cy, range.first), patch_key)
     }
 
@@ -494,6 +489,15 @@ fn read_map(
         }
     }
     map
+}
+
+/// The shortest circular correlation along one axis that holds the linear one at the `count`
+/// offsets from `first` of a patch of length `patch` over data of length `len` (see
+/// [`SsdSearch::search_range`]).
+fn range_length(len: usize, first: isize, count: usize, patch: usize) -> usize {
+    let last = first + count as isize - 1;
+    let below = (len as isize - first.min(0)).max(len as isize);
+    below.max(last + patch as isize).max(1) as usize
 }
 
 /// `|v|^2` of one pixel, summed over its channels.

@@ -7,8 +7,8 @@
 //! region) against the input, so recomputing the patch side is cheap next to holding it. Three
 //! spectra and one real field are alive at any time.
 
-use super::MIN_AREA;
 use super::transform::Transform;
+use super::{MIN_AREA, range_length};
 use crate::core::{Error, Result};
 use crate::solvers::fft::{Complex, smooth_size};
 
@@ -146,11 +146,80 @@ pub fn volume_transform_size(
     )
 }
 
+/// The translations a [`volume_ssd_map_range`] computes: `count` of them from `first`, along x,
+/// y and t.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct VolumeRange {
+    pub first: (isize, isize, isize),
+    pub count: (usize, usize, usize),
+}
+
+/// The transform size of a [`volume_ssd_map_range`]: along each axis only as long as the offsets
+/// and the patch span together (see [`super::SsdSearch::search_range`] for the image case).
+#[must_use]
+pub fn volume_range_transform_size(
+    output: (usize, usize, usize),
+    patch: (usize, usize, usize),
+    range: VolumeRange,
+) -> (usize, usize, usize) {
+    let (f, c) = (range.first, range.count);
+    (
+        2 * smooth_size(range_length(output.0, f.0, c.0, patch.0).div_ceil(2)),
+        smooth_size(range_length(output.1, f.1, c.1, patch.1)),
+        smooth_size(range_length(output.2, f.2, c.2, patch.2)),
+    )
+}
+
 /// The cost and overlap of every translation of `patch` over `output` (an open boundary: voxels
 /// past the output's border count for nothing). Fails on empty or inconsistent volumes, weights
 /// that are negative or not finite, values that are not finite, different channel counts, or a
 /// transform of more than [`MAX_VOLUME_TRANSFORM_VALUES`].
 pub fn volume_ssd_map(output: VolumeView<'_>, patch: VolumeView<'_>) -> Result<VolumeSsdMap> {
+    check_pair(output, patch)?;
+    let size = (
+        output.width + patch.width - 1,
+        output.height + patch.height - 1,
+        output.depth + patch.depth - 1,
+    );
+    let first = (
+        1 - patch.width as isize,
+        1 - patch.height as isize,
+        1 - patch.depth as isize,
+    );
+    let n = volume_transform_size(
+        (output.width, output.height, output.depth),
+        (patch.width, patch.height, patch.depth),
+    );
+    correlate(output, patch, n, VolumeRange { first, count: size })
+}
+
+/// Like [`volume_ssd_map`], for the translations of `range` only (inside the output or not), with
+/// a transform only as large as they need: an entire-patch placement reads the output over the
+/// union of its candidates' footprints, and its offsets all lie in that window. Fails as
+/// [`volume_ssd_map`] does, and on an empty range.
+pub fn volume_ssd_map_range(
+    output: VolumeView<'_>,
+    patch: VolumeView<'_>,
+    range: VolumeRange,
+) -> Result<VolumeSsdMap> {
+    check_pair(output, patch)?;
+    let (cx, cy, ct) = range.count;
+    if cx == 0 || cy == 0 || ct == 0 {
+        return Err(Error::InvalidParameter {
+            name: "offset range",
+            reason: format!("is empty ({cx}x{cy}x{ct} offsets)"),
+        });
+    }
+    let n = volume_range_transform_size(
+        (output.width, output.height, output.depth),
+        (patch.width, patch.height, patch.depth),
+        range,
+    );
+    correlate(output, patch, n, range)
+}
+
+/// Fails on either volume's defects or different channel counts.
+fn check_pair(output: VolumeView<'_>, patch: VolumeView<'_>) -> Result<()> {
     output.check("output volume")?;
     patch.check("patch volume")?;
     if output.channels != patch.channels {
@@ -162,10 +231,16 @@ pub fn volume_ssd_map(output: VolumeView<'_>, patch: VolumeView<'_>) -> Result<V
             ),
         });
     }
-    let (nx, ny, nz) = volume_transform_size(
-        (output.width, output.height, output.depth),
-        (patch.width, patch.height, patch.depth),
-    );
+    Ok(())
+}
+
+/// The search proper (the volumes checked) over an `nx` x `ny` x `nz` transform, read out at the offsets of `range`.
+fn correlate(
+    output: VolumeView<'_>,
+    patch: VolumeView<'_>,
+    (nx, ny, nz): (usize, usize, usize),
+    range: VolumeRange,
+) -> Result<VolumeSsdMap> {
     let values = nx * ny * nz;
     if values > MAX_VOLUME_TRANSFORM_VALUES {
         return Err(Error::InvalidParameter {
@@ -191,16 +266,7 @@ pub fn volume_ssd_map(output: VolumeView<'_>, patch: VolumeView<'_>) -> Result<V
     transform.forward(&field, &mut b);
     multiply_conj(&mut acc, &a, &b, 1.0, false);
     transform.inverse(&mut acc, &mut field);
-    let size = (
-        output.width + patch.width - 1,
-        output.height + patch.height - 1,
-        output.depth + patch.depth - 1,
-    );
-    let first = (
-        1 - patch.width as isize,
-        1 - patch.height as isize,
-        1 - patch.depth as isize,
-    );
+    let (size, first) = (range.count, range.first);
     let mut areas = read_map(&field, (nx, ny, nz), size, first);
 
     // C(t) = corr(w_O O^2, w_I) + corr(w_O, w_I I^2) - 2 sum_c corr(w_O O_c, w_I I_c); `b` still
@@ -373,6 +439,70 @@ mod tests {
         }
         assert_eq!(checked, map.costs.len());
         assert!(map.get(ow as isize, 0, 0).is_none());
+    }
+
+    #[test]
+    fn a_range_search_equals_the_direct_ssd_at_its_offsets() {
+        let mut rng = Rng::new(7);
+        let (ow, oh, od, pw, ph, pd, c) = (9, 7, 6, 5, 4, 3, 3);
+        let out = random(&mut rng, ow * oh * od * c);
+        let pat = random(&mut rng, pw * ph * pd * c);
+        let weights: Vec<f32> = (0..ow * oh * od)
+            .map(|i| if i % 4 == 1 { 0.0 } else { 1.0 })
+            .collect();
+        let output = VolumeView {
+            data: &out,
+            width: ow,
+            height: oh,
+            depth: od,
+            channels: c,
+            weights: Some(&weights),
+        };
+        let patch = VolumeView {
+            data: &pat,
+            width: pw,
+            height: ph,
+            depth: pd,
+            channels: c,
+            weights: None,
+        };
+        // Offsets inside the output, partly past its far side, and partly before it.
+        for range in [
+            VolumeRange {
+                first: (0, 0, 0),
+                count: (ow - pw + 1, oh - ph + 1, od - pd + 1),
+            },
+            VolumeRange {
+                first: (-2, 1, -1),
+                count: (8, 5, 4),
+            },
+        ] {
+            let full = volume_transform_size((ow, oh, od), (pw, ph, pd));
+            let n = volume_range_transform_size((ow, oh, od), (pw, ph, pd), range);
+            let map = volume_ssd_map_range(output, patch, range).unwrap();
+            assert_eq!(map.size, range.count);
+            for k in 0..range.count.2 as isize {
+                for j in 0..range.count.1 as isize {
+                    for i in 0..range.count.0 as isize {
+                        let t = (range.first.0 + i, range.first.1 + j, range.first.2 + k);
+                        let (cost, area) = map.get(t.0, t.1, t.2).unwrap();
+                        let (dc, da) = direct(output, patch, t);
+                        assert!((f64::from(area) - da).abs() < 1e-4, "area at {t:?} ({n:?})");
+                        assert!(
+                            (f64::from(cost) - dc).abs() < 1e-3 * (1.0 + dc),
+                            "cost at {t:?}: {cost} vs {dc} ({n:?})"
+                        );
+                    }
+                }
+            }
+            assert!(n.0 * n.1 * n.2 < full.0 * full.1 * full.2, "{n:?} vs {full:?}");
+        }
+        let empty = VolumeRange {
+            first: (0, 0, 0),
+            count: (0, 1, 1),
+        };
+        let err = volume_ssd_map_range(output, patch, empty).unwrap_err().to_string();
+        assert!(err.contains("offset range"), "{err}");
     }
 
     #[test]

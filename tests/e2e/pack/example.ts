@@ -56,7 +56,7 @@ async function everything(): Promise<void> {
   // @ts-expect-error: not a feature kind
   detectFeatures(ex, { features: 'corners' });
   const clip = VideoClip.fromFrames(8, 8, 12, new Uint8Array(8 * 8 * 4 * 12));
-  const video = new VideoTextures(clip, { mode: 'extend', outputWidth: 16, fixedFrames: 2, placement: 'matching' });
+  const video = new VideoTextures(clip, { mode: 'extend', outputWidth: 16, fixedFrames: 2, placement: 'sub-patch' });
   for (const event of video) {
     const loopFrame: number | null = event.loopFrame;
     const offsetT: number | undefined = event.patch?.offsetT;
