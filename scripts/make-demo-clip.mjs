@@ -1,13 +1,20 @@
 #!/usr/bin/env node
-// Makes the demo clip of graph-cut video textures: a procedural water surface, written as a PNG
-// film strip (frames stacked top to bottom) into www/samples/clips/. Deterministic: the same
-// file every run, so the repository can always rebuild it and the tests can rely on it.
+// Makes the demo clips of graph-cut video textures, written as PNG film strips (frames stacked
+// top to bottom) into www/samples/clips/. Deterministic: the same file every run, so the
+// repository can always rebuild them and the tests can rely on them.
 //
-//   node scripts/make-demo-clip.mjs [--size 128] [--frames 60] [--out www/samples/clips/water.png]
+//   node scripts/make-demo-clip.mjs [--clip water|ripples] [--size 128] [--frames 60] [--out FILE]
 //
-// The surface is a sum of travelling waves whose angular speeds are not multiples of
-// 2 pi / frames, so the clip itself does not loop: making it loop is the synthesis's job. Colour
-// comes from the height (deep to shallow blue) and from the slope (bright caustic-like ridges).
+// water: a sum of travelling waves whose angular speeds are not multiples of 2 pi / frames, so the
+// clip itself does not loop: making it loop is the synthesis's job. Its waves cover the whole
+// frame alike, so a loop's best cut in time is nearly the same at every pixel.
+//
+// ripples: a pond with three sources of circular ripples, each with its own frequency and a slow
+// swell of its own period and phase, so that the motion differs across the frame: where one
+// source's swell matches itself a loop length later, another's does not. A loop's seam surface
+// (7.A) then cuts at a different time in different parts of the frame.
+//
+// Colour comes from the height (deep to shallow) and from the slope (bright caustic-like ridges).
 import { writeFileSync, mkdirSync } from 'node:fs';
 import { dirname } from 'node:path';
 import { deflateSync } from 'node:zlib';
@@ -15,9 +22,10 @@ import { deflateSync } from 'node:zlib';
 const args = Object.fromEntries(
   process.argv.slice(2).reduce((pairs, arg, i, all) => (arg.startsWith('--') ? [...pairs, [arg.slice(2), all[i + 1]]] : pairs), []),
 );
+const clip = args.clip ?? 'water';
 const size = Number(args.size ?? 128);
 const frames = Number(args.frames ?? 60);
-const out = args.out ?? new URL('../www/samples/clips/water.png', import.meta.url).pathname;
+const out = args.out ?? new URL(`../www/samples/clips/${clip}.png`, import.meta.url).pathname;
 
 // A small deterministic generator (mulberry32) for the wave parameters.
 let state = 0x2f6b1d3;
@@ -27,21 +35,52 @@ const random = () => {
   t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
   return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
 };
-const waves = Array.from({ length: 9 }, (_, k) => {
-  const angle = random() * 2 * Math.PI;
-  const wavelength = 10 + random() * 38;
-  const number = (2 * Math.PI) / wavelength;
-  return {
-    kx: Math.cos(angle) * number,
-    ky: Math.sin(angle) * number,
-    // Deep-water dispersion (omega ~ sqrt(k)), scaled so a wave moves a few pixels per frame.
-    omega: 0.55 * Math.sqrt(number * 9.81) * (0.8 + 0.4 * random()),
-    phase: random() * 2 * Math.PI,
-    amplitude: (wavelength / 48) * (0.6 + 0.4 * random()) / (1 + k * 0.15),
-  };
-});
 
-const height = (x, y, t) => waves.reduce((h, w) => h + w.amplitude * Math.sin(w.kx * x + w.ky * y - w.omega * t + w.phase), 0);
+/** The water surface: travelling plane waves over the whole frame. */
+function waterHeight() {
+  const waves = Array.from({ length: 9 }, (_, k) => {
+    const angle = random() * 2 * Math.PI;
+    const wavelength = 10 + random() * 38;
+    const number = (2 * Math.PI) / wavelength;
+    return {
+      kx: Math.cos(angle) * number,
+      ky: Math.sin(angle) * number,
+      // Deep-water dispersion (omega ~ sqrt(k)), scaled so a wave moves a few pixels per frame.
+      omega: 0.55 * Math.sqrt(number * 9.81) * (0.8 + 0.4 * random()),
+      phase: random() * 2 * Math.PI,
+      amplitude: (wavelength / 48) * (0.6 + 0.4 * random()) / (1 + k * 0.15),
+    };
+  });
+  return (x, y, t) => waves.reduce((h, w) => h + w.amplitude * Math.sin(w.kx * x + w.ky * y - w.omega * t + w.phase), 0);
+}
+
+/**
+ * The pond: three ripple sources at fixed places (in fractions of the frame), each with its own
+ * wavelength and speed, its amplitude fading with distance and swelling and ebbing over a period
+ * of its own; a faint, slow background swell everywhere.
+ */
+function ripplesHeight() {
+  const sources = [
+    { x: 0.18, y: 0.25, wavelength: 11, speed: 1.3, swell: 37, phase: 0.3 },
+    { x: 0.8, y: 0.35, wavelength: 17, speed: 1.9, swell: 53, phase: 2.4 },
+    { x: 0.45, y: 0.85, wavelength: 8, speed: 0.9, swell: 29, phase: 4.4 },
+  ].map((s) => ({ ...s, x: s.x * size, y: s.y * size, reach: 0.3 * size, start: random() * 2 * Math.PI }));
+  return (x, y, t) => sources.reduce((h, s) => {
+    const r = Math.hypot(x - s.x, y - s.y);
+    const k = (2 * Math.PI) / s.wavelength;
+    const swell = 0.5 + 0.5 * Math.sin((2 * Math.PI * t) / s.swell + s.phase);
+    const fade = Math.exp(-r / s.reach) / Math.sqrt(1 + r / s.wavelength);
+    return h + 1.6 * swell * fade * Math.sin(k * (r - s.speed * t) + s.start);
+  }, 0.15 * Math.sin(0.05 * x + 0.03 * y - 0.07 * t));
+}
+
+const [height, palette] = {
+  water: [waterHeight, { base: [10, 60, 110], level: [60, 110, 110], glint: [190, 150, 90] }],
+  ripples: [ripplesHeight, { base: [20, 55, 45], level: [50, 120, 90], glint: [200, 190, 120] }],
+}[clip]?.map((v, i) => (i === 0 ? v() : v)) ?? (() => {
+  console.error(`make-demo-clip: --clip must be water or ripples, got ${clip}`);
+  process.exit(2);
+})();
 
 const rgb = new Uint8Array(size * size * frames * 3);
 for (let t = 0; t < frames; t++) {
@@ -52,9 +91,9 @@ for (let t = 0; t < frames; t++) {
       const level = Math.min(1, Math.max(0, 0.5 + h * 0.35));
       const glint = Math.min(1, Math.max(0, (0.09 - slope) * 9)) ** 3;
       const i = ((t * size + y) * size + x) * 3;
-      rgb[i] = Math.round(Math.min(255, 10 + 60 * level + 190 * glint));
-      rgb[i + 1] = Math.round(Math.min(255, 60 + 110 * level + 150 * glint));
-      rgb[i + 2] = Math.round(Math.min(255, 110 + 110 * level + 90 * glint));
+      for (let c = 0; c < 3; c++) {
+        rgb[i + c] = Math.round(Math.min(255, palette.base[c] + palette.level[c] * level + palette.glint[c] * glint));
+      }
     }
   }
 }

@@ -96,7 +96,7 @@ test('the demo clip loops, with its x-t slice, loop point, playback and WebM', a
 
 test('a spatial extension at 1.5 times the clip, with the gradient cost and its own refinements', async () => {
   const { page, errors } = demo;
-  await page.selectOption('#vt-source', 'demo');
+  await page.selectOption('#vt-source', 'water');
   await page.fill('#vt-size', '32');
   await page.dispatchEvent('#vt-size', 'change');
   await page.fill('#vt-frames', '12');
@@ -116,5 +116,24 @@ test('a spatial extension at 1.5 times the clip, with the gradient cost and its 
   assert.equal(await page.$eval('#output-canvas', (c) => `${c.width}x${c.height}`), '48x48');
   assert.equal(await page.getAttribute('body', 'data-video-frames'), '8');
   await page.screenshot({ path: `${RESULTS}/video-extend.png`, fullPage: true });
+  assert.deepEqual(errors, []);
+});
+
+test('the ripples clip loops with a seam surface that cuts at different times across the frame', async () => {
+  const { page, errors } = demo;
+  await page.selectOption('#vt-source', 'ripples');
+  await page.fill('#vt-size', '64');
+  await page.dispatchEvent('#vt-size', 'change');
+  await page.fill('#vt-frames', '60');
+  await page.dispatchEvent('#vt-frames', 'change');
+  await page.selectOption('#vt-mode', 'loop');
+  await page.waitForFunction(() => /input clip: 64×64, 60 frames/.test(document.getElementById('vt-input-caption').textContent));
+  await page.click('#run');
+  await page.waitForSelector('body[data-video-done="true"]', { timeout: 120_000 });
+  // A cut at one time for every pixel would leave no seam inside any frame; the frame shown is
+  // the one the seam surface crosses most.
+  const seamPixels = Number(await page.getAttribute('body', 'data-video-seam-pixels'));
+  assert.ok(seamPixels >= 64, `the frame shown has ${seamPixels} seam pixels`);
+  await page.screenshot({ path: `${RESULTS}/video-ripples.png`, fullPage: true });
   assert.deepEqual(errors, []);
 });

@@ -17,14 +17,16 @@ import { ANATOMY_HTML, showPlacementAnatomy } from './graphcut-anatomy.js';
 export const id = 'video';
 export const title = 'Video textures';
 
-const DEMO_CLIP = './samples/clips/water.png';
+/** The built-in clips (scripts/make-demo-clip.mjs), by the value of their option. */
+const DEMO_CLIPS = { water: './samples/clips/water.png', ripples: './samples/clips/ripples.png' };
 const PLAYBACK_FPS = 15;
 
 const FIXED_TITLE = 'frames held fixed at both ends of random offsets or a spatial extension so that it loops (7.D); 0: no loop';
 
 const OPTIONS_HTML = `
   <label>Clip <select id="vt-source">
-    <option value="demo">demo: water (128×128, 60 frames)</option>
+    <option value="water">demo: water (128×128, 60 frames)</option>
+    <option value="ripples">demo: ripples, three sources, each with its own rhythm (128×128, 60 frames)</option>
     <option value="file">a video file or image sequence…</option>
   </select></label>
   <input id="vt-file" type="file" accept="video/*,image/*" multiple hidden>
@@ -148,9 +150,10 @@ export function createPanel(ui) {
   async function loadClip() {
     const files = ui.$('vt-file').files;
     const fromFile = ui.$('vt-source').value === 'file' && files.length > 0;
-    const key = `${fromFile ? [...files].map((f) => f.name).join('|') : 'demo'}:${size()}:${frameCount()}`;
+    const demo = DEMO_CLIPS[ui.$('vt-source').value] ?? DEMO_CLIPS.water;
+    const key = `${fromFile ? [...files].map((f) => f.name).join('|') : demo}:${size()}:${frameCount()}`;
     if (clip && clipKey === key) return clip;
-    if (loading?.key !== key) loading = { key, promise: decodeClip(fromFile ? files : null, key) };
+    if (loading?.key !== key) loading = { key, promise: decodeClip(fromFile ? files : null, key, demo) };
     const { promise } = loading;
     const loaded = await promise;
     if (loading?.key !== key) return loadClip();
@@ -163,11 +166,11 @@ export function createPanel(ui) {
     return clip;
   }
 
-  async function decodeClip(files, key) {
+  async function decodeClip(files, key, demo) {
     const s = size();
     let loaded;
     if (!files) {
-      loaded = clipFromStrip(await loadImage(DEMO_CLIP), { width: s, height: s });
+      loaded = clipFromStrip(await loadImage(demo), { width: s, height: s });
     } else if (files.length === 1 && files[0].type.startsWith('video/')) {
       loaded = await clipFromVideo(files[0], {
         width: s, height: s, frames: frameCount(),

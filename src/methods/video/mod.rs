@@ -7,13 +7,14 @@
 //! - `transition` (7.A): frame-pair SSD and the best transition; the loop itself is two
 //!   placements of the session;
 //! - `placement`: error regions, random temporal (7.B) and spatio-temporal (7.E) offsets,
-//!   sub-patch matching with the 3-D FFT SSD (7.C);
+//!   entire-patch and sub-patch matching (7.C) with the 3-D FFT SSD;
 //! - `session`: phases, including 7.D's constrained first and last k frames;
 //! - `teaching`: per-frame seam overlay and x-t slice.
 
 pub mod anatomy;
 pub mod budget;
 pub mod canvas;
+pub mod loop_band;
 pub mod options;
 pub mod placement;
 pub mod procedural;
@@ -27,6 +28,8 @@ pub mod volume;
 
 #[cfg(test)]
 mod anatomy_tests;
+#[cfg(test)]
+mod loop_tests;
 #[cfg(test)]
 mod tests;
 

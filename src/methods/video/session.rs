@@ -15,6 +15,7 @@ use std::collections::HashSet;
 use super::anatomy::{CostSlice, cost_slice};
 use super::budget::WorkingSet;
 use super::canvas::{Canvas, Patch, UNCOVERED};
+use super::loop_band::{COPY_A, EXACT_PIXELS, place_second_copy};
 use super::options::{Mode, Options, Placement};
 use super::placement::{Allowed, Region, draw_offset, largest_search, region_around};
 use super::source::Source;
@@ -102,7 +103,7 @@ impl Session {
                 working_set.check(input, input, options.memory_budget_mib)?;
                 let tr = best_transition(&clip, options.transition_window)?;
                 let h = tr.half_window;
-                let a = clip.frames_range(tr.from - h - 1, 2 * h + 1)?;
+                let a = clip.frames_range(tr.from - h - 1, 2 * h + 2)?;
                 let b = clip.frames_range(tr.to - h, 2 * h + 1)?;
                 let canvas = Canvas::new(input.0, input.1, 2 * h + 2)?;
                 let synthesis = Synthesis::new(
@@ -295,27 +296,17 @@ impl Session {
         self.synthesis.last_graph = None;
         let placed = match self.phase {
             Phase::LoopA => {
-                let patch = Patch {
-                    source: 0,
-                    tx: 0,
-                    ty: 0,
-                    tt: 0,
-                };
-                let placed = self.synthesis.place(patch, &[])?;
+                let placed = self.synthesis.place(COPY_A, &[])?;
                 self.phase = Phase::LoopB;
                 Some(placed)
             }
             Phase::LoopB => {
                 // Copy B: the clip translated by the loop length; its first frame is forced to
-                // keep A (it borders A's first frame), its last one is new, so the seam surface
-                // runs through the window in between.
-                let patch = Patch {
-                    source: 1,
-                    tx: 0,
-                    ty: 0,
-                    tt: 1,
-                };
-                let placed = self.synthesis.place(patch, &[])?;
+                // keep A (it borders A's first frame), its last one to take B (the clip goes on
+                // from it after the window), so the seam surface runs through the window in
+                // between. A reaches that last frame too, so a cut there costs both copies'
+                // differences, as a cut anywhere else does, and the seam does not drift to it.
+                let placed = place_second_copy(&mut self.synthesis, EXACT_PIXELS)?;
                 self.phase = Phase::Done;
                 Some(placed)
             }

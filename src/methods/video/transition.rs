@@ -27,14 +27,14 @@ impl Transition {
 
 /// The half window for a clip of `frames` frames and a window option of `window` frames: at most
 /// (window - 1) / 2, and at most (frames - 1) / 6 so that a range of loop lengths (from 2h + 1 to
-/// frames - 2h) remains to choose the best transition from.
+/// frames - 2h - 1) remains to choose the best transition from.
 #[must_use]
 pub fn half_window(frames: usize, window: usize) -> usize {
     ((window.max(1) - 1) / 2).min(frames.saturating_sub(1) / 6)
 }
 
 /// The pair (i, j), j < i, of smallest frame SSD among those whose window fits: j >= h,
-/// i + h <= frames, i - j >= 2h + 1.
+/// i + h < frames (copy A reaches the frame after the window), i - j >= 2h + 1.
 pub fn best_transition(clip: &Volume, window: usize) -> Result<Transition> {
     let n = clip.frames();
     let h = half_window(n, window);
@@ -48,7 +48,7 @@ pub fn best_transition(clip: &Volume, window: usize) -> Result<Transition> {
     }
     let mut best: Option<Transition> = None;
     for to in h..n {
-        for from in (to + 2 * h + 1)..=(n - h) {
+        for from in (to + 2 * h + 1)..(n - h) {
             let distance = clip.frame_difference(from, to);
             if best.is_none_or(|b| distance < b.distance) {
                 best = Some(Transition {
