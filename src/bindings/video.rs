@@ -115,6 +115,13 @@ pub(crate) const SCHEMA: Schema = Schema {
             Some("60"),
             "'loop': the most frames of the seam window around the transition (shorter clips get at most a sixth of their frames on either side).",
         ),
+        count(
+            "transitions",
+            1,
+            16,
+            Some("3"),
+            "'loop': how many good transitions get a seam surface (the best by frame SSD, then the next best of other loop lengths within the window around it); the cheapest seam is kept. 1 seams the best transition only.",
+        ),
         Opt {
             key: "placement",
             kind: Kind::Choice(&["random", "entire-patch", "sub-patch", "matching"]),
@@ -182,6 +189,11 @@ pub(crate) const SCHEMA: Schema = Schema {
             ts: "number | null",
             doc: "'loop': the output frame where the loop's transition lies, once known; null otherwise.",
         },
+        EventField {
+            key: "transition",
+            ts: "{ index: number; count: number; loopLength: number } | null",
+            doc: "'loop': the transition this step seamed (the one kept, on the last step): its number among the good transitions (0 is the best by frame SSD), how many there are, and its loop length in frames; null for the other modes.",
+        },
     ],
 };
 
@@ -206,6 +218,7 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
         output_frames: js.size("outputFrames")?,
         fixed_frames: js.size("fixedFrames")?,
         transition_window: js.size("transitionWindow")?.unwrap_or(d.transition_window),
+        transitions: js.size("transitions")?.unwrap_or(d.transitions),
         placement: js
             .choice("placement", Placement::from_name)?
             .unwrap_or(d.placement),
@@ -242,6 +255,17 @@ fn event_object(e: &Event) -> JsResult<JsValue> {
         (
             "loopFrame",
             e.loop_frame.map_or(JsValue::NULL, |f| (f as f64).into()),
+        ),
+        (
+            "transition",
+            e.transition
+                .map_or(JsValue::NULL, |(index, count, length)| {
+                    object(&[
+                        ("index", (index as u32).into()),
+                        ("count", (count as u32).into()),
+                        ("loopLength", (length as u32).into()),
+                    ])
+                }),
         ),
     ])
 }

@@ -134,6 +134,8 @@ test('the ripples clip loops with a seam surface that cuts at different times ac
   // the one the seam surface crosses most.
   const seamPixels = Number(await page.getAttribute('body', 'data-video-seam-pixels'));
   assert.ok(seamPixels >= 64, `the frame shown has ${seamPixels} seam pixels`);
+  // Three good transitions were seamed; the readout names the one kept.
+  assert.match(await page.textContent('#vt-readout'), /kept transition [123] of 3 \(loop of \d+ frames\)/);
   await page.screenshot({ path: `${RESULTS}/video-ripples.png`, fullPage: true });
   assert.deepEqual(errors, []);
 });

@@ -21,6 +21,14 @@ export const title = 'Video textures';
 const DEMO_CLIPS = { water: './samples/clips/water.png', ripples: './samples/clips/ripples.png' };
 const PLAYBACK_FPS = 15;
 
+/** A loop's transition in the readout: the one seamed by this step, or the one kept at the end. */
+function transitionText(event) {
+  const tr = event.transition;
+  if (!tr || tr.count < 2) return '';
+  const which = `transition ${tr.index + 1} of ${tr.count} (loop of ${tr.loopLength} frames)`;
+  return event.done ? ` · kept ${which}: its seam cost least` : ` · seaming ${which}`;
+}
+
 const FIXED_TITLE = 'frames held fixed at both ends of random offsets or a spatial extension so that it loops (7.D); 0: no loop';
 
 const OPTIONS_HTML = `
@@ -50,6 +58,7 @@ const OPTIONS_HTML = `
     <option value="3">3</option>
   </select></label>
   <label title="loop (7.A): the most frames of the seam window around the transition (the paper's 60; short clips get less)">window <input id="vt-window" type="number" value="60" min="3" max="240" step="1"></label>
+  <label title="loop (7.A): how many good transitions get a seam surface (the best by frame difference, then the next best of other loop lengths around it); the cheapest seam is kept">transitions <input id="vt-transitions" type="number" value="3" min="1" max="16" step="1"></label>
   <label title="patches placed over the worst seams once every voxel is covered (section 3.2)">refine <input id="vt-refine" type="number" value="2" min="0" max="50" step="1"></label>
   <label title="seam cost M′ (eq. 5): the colour difference divided by the gradients, so seams run along edges"><input id="vt-gradient" type="checkbox"> gradient cost M′</label>
   <label class="views" title="the row the x-t slice is taken at">slice row <input id="vt-row" class="view" type="range" min="0" max="63" value="32"></label>
@@ -199,7 +208,10 @@ export function createPanel(ui) {
       refinementPatches: Math.round(Number(ui.$('vt-refine').value) || 0),
       gradientCost: ui.$('vt-gradient').checked,
     };
-    if (mode === 'loop') o.transitionWindow = Math.max(3, Math.round(Number(ui.$('vt-window').value) || 60));
+    if (mode === 'loop') {
+      o.transitionWindow = Math.max(3, Math.round(Number(ui.$('vt-window').value) || 60));
+      o.transitions = Math.min(16, Math.max(1, Math.round(Number(ui.$('vt-transitions').value) || 3)));
+    }
     // A loop (7.A) closes through its transition; k of 7.D is for the other modes.
     if (mode !== 'loop') o.fixedFrames = Math.round(Number(ui.$('vt-fixed').value) || 0);
     // A loop is as long as the transition it finds; the other modes take a length.
@@ -359,6 +371,7 @@ export function createPanel(ui) {
       const syncMode = () => {
         const loop = ui.$('vt-mode').value === 'loop';
         ui.$('vt-window').disabled = !loop;
+        ui.$('vt-transitions').disabled = !loop;
         ui.$('vt-scale').disabled = ui.$('vt-mode').value !== 'extend';
         ui.$('vt-fixed').disabled = loop;
         ui.$('vt-fixed-label').title = loop ? `${FIXED_TITLE}. Off: a loop (7.A) closes through its transition` : FIXED_TITLE;
@@ -407,7 +420,8 @@ export function createPanel(ui) {
       ui.$('vt-readout').textContent =
         (p ? `patch ${p.index + 1} at (x ${p.offsetX}, y ${p.offsetY}, t ${p.offsetT})` : `${event.patchesPlaced} patches`) +
         ` · ${event.pixelsTaken} voxels taken · ` +
-        `cut cost ${event.cutCost.toPrecision(3)}${event.covered ? ' · refining' : ''} · showing frame ${t + 1}/${frames}`;
+        `cut cost ${event.cutCost.toPrecision(3)}${event.covered ? ' · refining' : ''} · showing frame ${t + 1}/${frames}` +
+        transitionText(event);
       await drawFrame(t);
       await drawSlice();
       drawAnatomy(event);

@@ -250,8 +250,11 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                     None
                 },
                 transition_window: count(u, 8, v)?.max(3),
-                placement: video::Placement::from_name(*u.choose(&["random", "matching"])?)
-                    .expect("known"),
+                transitions: count(u, 3, v)?,
+                placement: video::Placement::from_name(
+                    *u.choose(&["random", "entire-patch", "sub-patch", "matching"])?,
+                )
+                .expect("known"),
                 seed: seed(u)?,
                 k: real(u, 0.01, v)?.max(1e-6),
                 refinement_patches: count(u, 2, v)?.min(1024),

@@ -8,7 +8,7 @@ use super::procedural::waves;
 use super::session::Session;
 use super::source::Source;
 use super::synthesis::Synthesis;
-use super::transition::best_transition;
+use super::transition::{best_transition, good_transitions};
 use super::volume::Volume;
 
 const RIPPLES: &[u8] = include_bytes!("../../../www/samples/clips/ripples.png");
@@ -84,4 +84,66 @@ fn the_banded_cut_costs_within_five_percent_of_the_exact_cut() {
         assert!(banded >= exact * (1.0 - 1e-6), "seed {seed}: banded {banded} below the exact {exact}");
         assert!(banded <= 1.05 * exact, "seed {seed}: banded {banded}, exact {exact}");
     }
+}
+
+/// The good transitions: the best by frame SSD first, then others of loop lengths of their own,
+/// each pair within the half window of the best pair's frames, by frame SSD.
+#[test]
+fn good_transitions_lie_around_the_best_with_loop_lengths_of_their_own() {
+    let clip = waves(16, 16, 60, 3).unwrap();
+    let best = best_transition(&clip, 60).unwrap();
+    let good = good_transitions(&clip, 60, 4).unwrap();
+    assert_eq!(good[0], best);
+    assert_eq!(good.len(), 4);
+    let h = best.half_window;
+    let mut periods: Vec<usize> = good.iter().map(|t| t.period()).collect();
+    periods.dedup();
+    periods.sort_unstable();
+    periods.dedup();
+    assert_eq!(periods.len(), 4, "{good:?}");
+    for t in &good[1..] {
+        assert!(t.from.abs_diff(best.from) <= h && t.to.abs_diff(best.to) <= h, "{t:?}");
+        assert!(t.to >= h && t.from + h < 60 && t.period() > 2 * h, "{t:?}");
+        assert!(t.distance >= best.distance);
+    }
+    assert!(good.windows(2).skip(1).all(|w| w[0].distance <= w[1].distance));
+}
+
+/// With several transitions the loop keeps the one whose seam costs least, and says so on its
+/// last event; with one it seams the best transition by frame SSD.
+#[test]
+fn the_loop_keeps_the_transition_whose_seam_costs_least() {
+    let clip = demo_clip(WATER, 4);
+    let options = |transitions| Options {
+        transitions,
+        ..Options::default()
+    };
+    let mut session = Session::new(clip.clone(), options(3)).unwrap();
+    let mut seams = Vec::new();
+    let mut last = None;
+    while !session.is_done() {
+        let event = session.step().unwrap();
+        if event.patch == Some(1) {
+            seams.push((event.cut_cost, event.transition));
+        }
+        last = Some(event);
+    }
+    assert_eq!(seams.len(), 3);
+    let numbers: Vec<usize> = seams[..2].iter().map(|s| s.1.unwrap().0).collect();
+    assert_eq!(numbers, vec![0, 1], "the events name the transition each step seamed");
+    let costs: Vec<f64> = seams.iter().map(|s| s.0).collect();
+    let cheapest = (0..3).min_by(|&a, &b| costs[a].total_cmp(&costs[b])).unwrap();
+    let kept = last.unwrap().transition.expect("a loop's transition");
+    assert_eq!((kept.0, kept.1), (cheapest, 3), "costs {costs:?}");
+    assert_eq!(session.transition().unwrap().period(), kept.2);
+    assert_eq!(session.size().2, kept.2, "the output is the kept loop");
+    // The canvas is the kept seam's: its seams cost what the kept step's cut did.
+    let total = session.synthesis().canvas.total_seam_cost();
+    assert!((total - costs[cheapest]).abs() < 1e-3 * costs[cheapest], "{total} vs {costs:?}");
+
+    let mut one = Session::new(clip.clone(), options(1)).unwrap();
+    while !one.is_done() {
+        one.step().unwrap();
+    }
+    assert_eq!(one.transition(), Some(best_transition(&clip, 60).unwrap()));
 }

@@ -87,6 +87,10 @@ pub struct Options {
     /// The most frames of the seam window around the transition of 7.A. Default: 60 (the
     /// paper's "60-frame spatio-temporal window"); shorter clips get a shorter window.
     pub transition_window: usize,
+    /// [`Mode::Loop`]: how many good transitions get a seam surface (the best by frame SSD, and
+    /// the next best of other loop lengths within the window around it); the one whose seam costs
+    /// least is kept. Default: 3; 1 seams the best transition only.
+    pub transitions: usize,
     /// How offsets are chosen in [`Mode::Offsets`] and [`Mode::Extend`]. Default: random.
     pub placement: Placement,
     /// Seed of every random choice (offsets, eq. 3's draws). Default: 1.
@@ -112,6 +116,7 @@ impl Default for Options {
             output_frames: None,
             fixed_frames: None,
             transition_window: 60,
+            transitions: DEFAULT_TRANSITIONS,
             placement: Placement::Random,
             seed: 1,
             k: 0.01,
@@ -121,6 +126,12 @@ impl Default for Options {
         }
     }
 }
+
+/// Transitions a loop seams by default (the paper's "limited number").
+pub const DEFAULT_TRANSITIONS: usize = 3;
+
+/// The most transitions a loop may seam: each is a max-flow over the whole window.
+pub const MAX_TRANSITIONS: usize = 16;
 
 /// k of 7.D when `fixed_frames` is not given: "k = 10 in our implementation".
 pub const DEFAULT_FIXED_FRAMES: usize = 10;
@@ -174,6 +185,15 @@ impl Options {
                     return Err(invalid(
                         "outputFrames",
                         "mode 'loop' chooses the loop length from the best transition; leave it out".into(),
+                    ));
+                }
+                if !(1..=MAX_TRANSITIONS).contains(&self.transitions) {
+                    return Err(invalid(
+                        "transitions",
+                        format!(
+                            "must be between 1 and {MAX_TRANSITIONS}, got {}",
+                            self.transitions
+                        ),
                     ));
                 }
                 if self.transition_window < 3 {

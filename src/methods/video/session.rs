@@ -21,7 +21,7 @@ use super::placement::{Allowed, Region, draw_offset, largest_search, region_arou
 use super::source::Source;
 use super::synthesis::GraphSlice;
 use super::synthesis::Synthesis;
-use super::transition::{Transition, best_transition, half_window};
+use super::transition::{Transition, good_transitions, half_window};
 use super::volume::Volume;
 use crate::core::{Result, Rng};
 use crate::methods::graphcut::cost::value_sigma;
@@ -49,6 +49,9 @@ pub struct Event {
     /// The output frame around which the loop closes: the centre of 7.A's seam window, the last
     /// frame for a 7.D loop (it is followed by frame 0); None while unknown or when not a loop.
     pub loop_frame: Option<usize>,
+    /// 7.A: the transition this step seamed (the one kept, once done): its number among the
+    /// good transitions (0 is the best by frame SSD), how many there are, and its loop length.
+    pub transition: Option<(usize, usize, usize)>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -79,6 +82,12 @@ pub struct Session {
     last_costs: Option<CostSlice>,
     /// What the constructor checked against the memory budget.
     working_set: WorkingSet,
+    /// 7.A: the transitions to seam, best first; `candidate` is the one being seamed.
+    candidates: Vec<Transition>,
+    candidate: usize,
+    /// 7.A: the cheapest seam so far, with its canvas, its transition and that transition's
+    /// number.
+    best: Option<(f64, Synthesis, Transition, usize)>,
 }
 
 impl Session {
@@ -94,24 +103,23 @@ impl Session {
             Mode::Loop => {
                 let h = half_window(input.2, options.transition_window);
                 let window = 2 * h + 1;
+                // With several transitions the cheapest seam so far is kept beside the current.
+                let copies = if options.transitions > 1 { 2 } else { 1 };
                 let working_set = WorkingSet {
-                    input_voxels: plane(input.0, input.1) * (input.2 + 2 * window),
-                    output_voxels: plane(input.0, input.1) * (window + 1 + input.2 / 4),
+                    input_voxels: plane(input.0, input.1) * (input.2 + 2 * (window + 1) * copies),
+                    output_voxels: plane(input.0, input.1) * ((window + 1) * copies + input.2 / 4),
                     patch_voxels: plane(input.0, input.1) * window,
                     search_bytes: 0,
                 };
                 working_set.check(input, input, options.memory_budget_mib)?;
-                let tr = best_transition(&clip, options.transition_window)?;
-                let h = tr.half_window;
-                let a = clip.frames_range(tr.from - h - 1, 2 * h + 2)?;
-                let b = clip.frames_range(tr.to - h, 2 * h + 1)?;
-                let canvas = Canvas::new(input.0, input.1, 2 * h + 2)?;
-                let synthesis = Synthesis::new(
-                    vec![Source::new(a), Source::new(b)],
-                    canvas,
-                    options.gradient_cost,
-                );
+                let candidates =
+                    good_transitions(&clip, options.transition_window, options.transitions)?;
+                let tr = candidates[0];
+                let synthesis = loop_synthesis(&clip, tr, options.gradient_cost)?;
                 Ok(Session {
+                    candidates,
+                    candidate: 0,
+                    best: None,
                     options,
                     clip,
                     synthesis,
@@ -153,6 +161,9 @@ impl Session {
                 let canvas = Canvas::new(size.0, size.1, total)?;
                 let synthesis = Synthesis::new(sources, canvas, options.gradient_cost);
                 Ok(Session {
+                    candidates: Vec::new(),
+                    candidate: 0,
+                    best: None,
                     options,
                     clip,
                     synthesis,
@@ -294,6 +305,9 @@ impl Session {
         // Each placement records its own anatomy (a random one has no cost surface).
         self.last_costs = None;
         self.synthesis.last_graph = None;
+        // 7.A: the transition a second copy was just seamed for (the session moves on to the
+        // next one in the same step).
+        let mut seamed = None;
         let placed = match self.phase {
             Phase::LoopA => {
                 let placed = self.synthesis.place(COPY_A, &[])?;
@@ -307,7 +321,8 @@ impl Session {
                 // between. A reaches that last frame too, so a cut there costs both copies'
                 // differences, as a cut anywhere else does, and the seam does not drift to it.
                 let placed = place_second_copy(&mut self.synthesis, EXACT_PIXELS)?;
-                self.phase = Phase::Done;
+                seamed = self.transition_step();
+                self.next_transition(placed.cut_cost)?;
                 Some(placed)
             }
             Phase::Constraint => self.step_constraint()?,
@@ -325,6 +340,7 @@ impl Session {
             covered: canvas.is_covered(),
             coverage: canvas.covered as f64 / canvas.voxel_count() as f64,
             loop_frame: None,
+            transition: None,
         };
         if let Some(p) = placed {
             let tt = self.output_frame(i64::from(p.patch.tt)) as i32;
@@ -333,8 +349,45 @@ impl Session {
             event.cut_cost = p.cut_cost;
         }
         event.loop_frame = self.loop_frame();
+        event.transition = seamed
+            .filter(|_| !event.done)
+            .or_else(|| self.transition_step());
         self.last = Some(event);
         Ok(event)
+    }
+
+    /// 7.A: the transition being seamed (the one kept, once done), as [`Event::transition`].
+    fn transition_step(&self) -> Option<(usize, usize, usize)> {
+        self.transition
+            .map(|tr| (self.candidate, self.candidates.len(), tr.period()))
+    }
+
+    /// After a transition's seam of `cost`: keeps it if it is the cheapest so far and sets up the
+    /// next transition's canvas, or, after the last, restores the cheapest and finishes.
+    fn next_transition(&mut self, cost: f64) -> Result<()> {
+        let better = self.best.as_ref().is_none_or(|(least, ..)| cost < *least);
+        let current = self.transition.expect("a loop has a transition");
+        let watched = self.synthesis.record_anatomy;
+        if let Some(&next) = self.candidates.get(self.candidate + 1) {
+            let mut fresh = loop_synthesis(&self.clip, next, self.options.gradient_cost)?;
+            fresh.record_anatomy = watched;
+            let seamed = std::mem::replace(&mut self.synthesis, fresh);
+            if better {
+                self.best = Some((cost, seamed, current, self.candidate));
+            }
+            self.candidate += 1;
+            self.transition = Some(next);
+            self.phase = Phase::LoopA;
+        } else {
+            if let Some((_, kept, tr, number)) = self.best.take().filter(|_| !better) {
+                self.synthesis = kept;
+                self.synthesis.record_anatomy = watched;
+                self.transition = Some(tr);
+                self.candidate = number;
+            }
+            self.phase = Phase::Done;
+        }
+        Ok(())
     }
 
     /// One patch of 7.D's constrained frames: the input's first k frames at t = 0 (anywhere in x
@@ -555,4 +608,18 @@ fn matched_offset(
         chosen.and_then(|p| cost_slice(&scored, p, allowed.spatial, temperature))
     });
     Ok((chosen, costs.flatten()))
+}
+
+/// 7.A's canvas and copies for transition `tr` of `clip`: copy A holds the clip's frames
+/// i - h - 1 to i + h, copy B frames j - h to j + h (placed one frame later).
+fn loop_synthesis(clip: &Volume, tr: Transition, gradient_cost: bool) -> Result<Synthesis> {
+    let h = tr.half_window;
+    let a = clip.frames_range(tr.from - h - 1, 2 * h + 2)?;
+    let b = clip.frames_range(tr.to - h, 2 * h + 1)?;
+    let canvas = Canvas::new(clip.width(), clip.height(), 2 * h + 2)?;
+    Ok(Synthesis::new(
+        vec![Source::new(a), Source::new(b)],
+        canvas,
+        gradient_cost,
+    ))
 }

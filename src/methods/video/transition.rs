@@ -68,3 +68,38 @@ pub fn best_transition(clip: &Volume, window: usize) -> Result<Transition> {
         ),
     })
 }
+
+/// The best transition and up to `count - 1` more good ones within the window around it (the
+/// paper's "limited number of good transitions within a window around the transition"): pairs
+/// whose frames lie within `h` of the best pair's, each of a loop length of its own (the copies'
+/// relative offset is what a seam can differ by), the least frame SSD for each length, best
+/// first.
+pub fn good_transitions(clip: &Volume, window: usize, count: usize) -> Result<Vec<Transition>> {
+    let best = best_transition(clip, window)?;
+    let (n, h) = (clip.frames(), best.half_window);
+    let mut by_period: Vec<Transition> = Vec::new();
+    for to in best.to.saturating_sub(h).max(h)..=(best.to + h).min(n - 1) {
+        let last = (best.from + h).min(n - h - 1);
+        for from in best.from.saturating_sub(h).max(to + 2 * h + 1)..=last {
+            if (from, to) == (best.from, best.to) {
+                continue;
+            }
+            let candidate = Transition {
+                from,
+                to,
+                half_window: h,
+                distance: clip.frame_difference(from, to),
+            };
+            match by_period.iter_mut().find(|t| t.period() == candidate.period()) {
+                Some(t) if candidate.distance < t.distance => *t = candidate,
+                Some(_) => {}
+                None if candidate.period() != best.period() => by_period.push(candidate),
+                None => {}
+            }
+        }
+    }
+    by_period.sort_by(|a, b| a.distance.total_cmp(&b.distance).then(a.from.cmp(&b.from)));
+    by_period.truncate(count.saturating_sub(1));
+    by_period.insert(0, best);
+    Ok(by_period)
+}
