@@ -14,7 +14,7 @@ use super::schema::{DONE, EventField, Kind, MEMORY_BUDGET, Opt, SEED, Schema, ki
 use super::session::{JsSession, js_session};
 use crate::core::Error;
 use crate::methods::video::teaching::{frame_rgba, seams_rgba, slice_xt_rgba};
-use crate::methods::video::{Event, Mode, Options, Placement, Session, Volume};
+use crate::methods::video::{Blend, Event, Mode, Options, Placement, Session, Volume};
 
 /// A video clip held in wasm memory: frames of RGB.
 #[wasm_bindgen]
@@ -123,6 +123,12 @@ pub(crate) const SCHEMA: Schema = Schema {
             "'loop': how many good transitions get a seam surface (the best by frame SSD, then the next best of other loop lengths within the window around it); the cheapest seam is kept. 1 seams the best transition only.",
         ),
         Opt {
+            key: "blend",
+            kind: Kind::Choice(&["none", "feather"]),
+            default: Some("'none'"),
+            doc: "'none', or 'feather' (section 5: a Gaussian-weighted mix of the patches meeting near a seam, over x, y and time; applied once done). Splining is for images only.",
+        },
+        Opt {
             key: "placement",
             kind: Kind::Choice(&["random", "entire-patch", "sub-patch", "matching"]),
             default: Some("'random'"),
@@ -228,6 +234,7 @@ fn read_options(value: &JsValue) -> JsResult<Options> {
             .size("refinementPatches")?
             .unwrap_or(d.refinement_patches),
         gradient_cost: js.boolean("gradientCost")?.unwrap_or(d.gradient_cost),
+        blend: js.choice("blend", Blend::from_name)?.unwrap_or(d.blend),
     };
     js.finish()?;
     Ok(options)

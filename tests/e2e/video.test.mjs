@@ -119,7 +119,7 @@ test('a spatial extension at 1.5 times the clip, with the gradient cost and its 
   assert.deepEqual(errors, []);
 });
 
-test('the ripples clip loops with a seam surface that cuts at different times across the frame', async () => {
+test('the ripples clip loops, feathered, with a seam surface that cuts at different times across the frame', async () => {
   const { page, errors } = demo;
   await page.selectOption('#vt-source', 'ripples');
   await page.fill('#vt-size', '64');
@@ -127,6 +127,7 @@ test('the ripples clip loops with a seam surface that cuts at different times ac
   await page.fill('#vt-frames', '60');
   await page.dispatchEvent('#vt-frames', 'change');
   await page.selectOption('#vt-mode', 'loop');
+  await page.selectOption('#vt-blend', 'feather');
   await page.waitForFunction(() => /input clip: 64×64, 60 frames/.test(document.getElementById('vt-input-caption').textContent));
   await page.click('#run');
   await page.waitForSelector('body[data-video-done="true"]', { timeout: 120_000 });

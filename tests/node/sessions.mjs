@@ -91,7 +91,7 @@ export const SESSIONS = {
     make: (o, input = tinyClip()) => new api.VideoTextures(input, over({ transitionWindow: 4, refinementPatches: 0 }, o)),
     options: {
       mode: enumOf('loop', 'offsets', 'extend'), outputWidth: SIZE, outputHeight: SIZE, outputFrames: SIZE,
-      fixedFrames: COUNT, transitionWindow: COUNT, transitions: COUNT, placement: enumOf('random', 'entire-patch', 'sub-patch', 'matching'), seed: SEED, k: REAL,
+      fixedFrames: COUNT, transitionWindow: COUNT, transitions: COUNT, blend: enumOf('none', 'feather'), placement: enumOf('random', 'entire-patch', 'sub-patch', 'matching'), seed: SEED, k: REAL,
       refinementPatches: COUNT, gradientCost: BOOL, memoryBudgetMiB: BUDGET,
     },
   },

@@ -59,6 +59,10 @@ const OPTIONS_HTML = `
   </select></label>
   <label title="loop (7.A): the most frames of the seam window around the transition (the paper's 60; short clips get less)">window <input id="vt-window" type="number" value="60" min="3" max="240" step="1"></label>
   <label title="loop (7.A): how many good transitions get a seam surface (the best by frame difference, then the next best of other loop lengths around it); the cheapest seam is kept">transitions <input id="vt-transitions" type="number" value="3" min="1" max="16" step="1"></label>
+  <label title="section 5: once done, each voxel near a seam becomes a Gaussian-weighted mix of the patches meeting there, across x, y and time">blend <select id="vt-blend">
+    <option value="none">none</option>
+    <option value="feather">feather</option>
+  </select></label>
   <label title="patches placed over the worst seams once every voxel is covered (section 3.2)">refine <input id="vt-refine" type="number" value="2" min="0" max="50" step="1"></label>
   <label title="seam cost M′ (eq. 5): the colour difference divided by the gradients, so seams run along edges"><input id="vt-gradient" type="checkbox"> gradient cost M′</label>
   <label class="views" title="the row the x-t slice is taken at">slice row <input id="vt-row" class="view" type="range" min="0" max="63" value="32"></label>
@@ -207,6 +211,7 @@ export function createPanel(ui) {
       seed: ui.seed(),
       refinementPatches: Math.round(Number(ui.$('vt-refine').value) || 0),
       gradientCost: ui.$('vt-gradient').checked,
+      blend: ui.$('vt-blend').value,
     };
     if (mode === 'loop') {
       o.transitionWindow = Math.max(3, Math.round(Number(ui.$('vt-window').value) || 60));

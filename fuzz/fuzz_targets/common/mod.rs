@@ -259,6 +259,8 @@ pub fn drive(u: &mut Unstructured, ex: &Image, values: Values, steps: usize) -> 
                 k: real(u, 0.01, v)?.max(1e-6),
                 refinement_patches: count(u, 2, v)?.min(1024),
                 gradient_cost: u.arbitrary()?,
+                blend: video::Blend::from_name(*u.choose(&["none", "feather", "spline"])?)
+                    .expect("known"),
                 memory_budget_mib: BUDGET_MIB,
             };
             if let Ok(mut s) = video::Session::new(clip, o) {

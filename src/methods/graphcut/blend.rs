@@ -13,6 +13,110 @@ pub const FEATHER_RADIUS: usize = 3;
 /// Pyramid levels of the multi-resolution spline.
 pub const SPLINE_LEVELS: usize = 4;
 
+/// A grid of labelled cells, pixels or voxels, whose seams [`feather`] hides: images and video
+/// share one feathering.
+pub trait FeatherGrid {
+    /// The grid's extent along x, y and t (1 for an image).
+    fn extent(&self) -> [usize; 3];
+    /// Values per cell.
+    fn channels(&self) -> usize;
+    /// The label of cell `i` ([`UNCOVERED`] where none).
+    fn label(&self, i: usize) -> u32;
+    /// Coordinate `c` along `axis`, brought inside the grid as its border says (wrapped or
+    /// clamped).
+    fn resolve(&self, axis: usize, c: isize) -> usize;
+    /// What the patch of `label` shows at cell `i`, or the output's own value where it does not
+    /// reach.
+    fn value(&self, label: u32, i: usize) -> &[f32];
+}
+
+/// Feathering (section 5): a cell near a seam becomes the average of what each nearby cell's
+/// patch shows at it, weighted by a Gaussian of the distance to that nearby cell, over a window
+/// of [`FEATHER_RADIUS`] along every axis the grid has (time too, for video: a seam in time is
+/// a seam). Away from seams every nearby cell has the same patch and the cell is unchanged.
+/// `out` holds the grid's values, `channels` per cell, and is changed where cells mix.
+pub fn feather<G: FeatherGrid>(grid: &G, out: &mut [f32]) {
+    let [w, h, d] = grid.extent();
+    let c = grid.channels();
+    let r = FEATHER_RADIUS as isize;
+    let rt = if d > 1 { r } else { 0 };
+    let sigma2 = (FEATHER_RADIUS as f32 / 2.0).powi(2);
+    let mut acc = [0.0f32; 4];
+    for t in 0..d {
+        for y in 0..h {
+            for x in 0..w {
+                let i = (t * h + y) * w + x;
+                let own = grid.label(i);
+                if own == UNCOVERED {
+                    continue;
+                }
+                let mut mixed = false;
+                acc[..c].iter_mut().for_each(|v| *v = 0.0);
+                let mut total = 0.0;
+                for dt in -rt..=rt {
+                    let nt = grid.resolve(2, t as isize + dt);
+                    for dy in -r..=r {
+                        let ny = grid.resolve(1, y as isize + dy);
+                        for dx in -r..=r {
+                            let nx = grid.resolve(0, x as isize + dx);
+                            let label = grid.label((nt * h + ny) * w + nx);
+                            if label == UNCOVERED {
+                                continue;
+                            }
+                            mixed |= label != own;
+                            let g = crate::core::math::expf(
+                                -((dx * dx + dy * dy + dt * dt) as f32) / (2.0 * sigma2),
+                            );
+                            let value = grid.value(label, i);
+                            for k in 0..c {
+                                acc[k] += g * value[k];
+                            }
+                            total += g;
+                        }
+                    }
+                }
+                if mixed {
+                    for (v, sum) in out[i * c..(i + 1) * c].iter_mut().zip(&acc) {
+                        *v = sum / total;
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The output's pixels as a feathering grid.
+impl FeatherGrid for Synthesis {
+    fn extent(&self) -> [usize; 3] {
+        [self.canvas.width, self.canvas.height, 1]
+    }
+
+    fn channels(&self) -> usize {
+        self.canvas.pixels.channels()
+    }
+
+    fn label(&self, i: usize) -> u32 {
+        self.canvas.label[i]
+    }
+
+    fn resolve(&self, axis: usize, c: isize) -> usize {
+        let edge = if self.canvas.wrap {
+            Edge::Wrap
+        } else {
+            Edge::Clamp
+        };
+        match axis {
+            0 => edge.resolve(c, self.canvas.width),
+            1 => edge.resolve(c, self.canvas.height),
+            _ => 0,
+        }
+    }
+
+    fn value(&self, label: u32, i: usize) -> &[f32] {
+        self.patch_value(self.canvas.patches[label as usize], i)
+    }
+}
+
 impl Synthesis {
     /// The value patch `patch` shows at pixel `i`, or the output's own where it does not reach.
     fn patch_value(&self, patch: Patch, i: usize) -> &[f32] {
@@ -25,61 +129,10 @@ impl Synthesis {
         }
     }
 
-    /// Feathering: a pixel near a seam becomes the average of what each nearby pixel's patch
-    /// shows at it, weighted by a Gaussian of the distance to that nearby pixel. Away from
-    /// seams every nearby pixel has the same patch and the pixel is unchanged.
+    /// Feathering ([`feather`]) of the output's seams.
     pub fn feathered(&self) -> Image {
-        let (w, h, c) = (
-            self.canvas.width,
-            self.canvas.height,
-            self.canvas.pixels.channels(),
-        );
         let mut out = self.canvas.pixels.clone();
-        let r = FEATHER_RADIUS as isize;
-        let sigma2 = (FEATHER_RADIUS as f32 / 2.0).powi(2);
-        let edge = if self.canvas.wrap {
-            Edge::Wrap
-        } else {
-            Edge::Clamp
-        };
-        let mut acc = [0.0f32; 4];
-        for y in 0..h {
-            for x in 0..w {
-                let i = y * w + x;
-                let own = self.canvas.label[i];
-                if own == UNCOVERED {
-                    continue;
-                }
-                let mut mixed = false;
-                acc[..c].iter_mut().for_each(|v| *v = 0.0);
-                let mut total = 0.0;
-                for dy in -r..=r {
-                    for dx in -r..=r {
-                        let (nx, ny) = (
-                            edge.resolve(x as isize + dx, w),
-                            edge.resolve(y as isize + dy, h),
-                        );
-                        let label = self.canvas.label[ny * w + nx];
-                        if label == UNCOVERED {
-                            continue;
-                        }
-                        mixed |= label != own;
-                        let g =
-                            crate::core::math::expf(-((dx * dx + dy * dy) as f32) / (2.0 * sigma2));
-                        let value = self.patch_value(self.canvas.patches[label as usize], i);
-                        for k in 0..c {
-                            acc[k] += g * value[k];
-                        }
-                        total += g;
-                    }
-                }
-                if mixed {
-                    for (v, sum) in out.pixel_mut(x, y).iter_mut().zip(&acc) {
-                        *v = sum / total;
-                    }
-                }
-            }
-        }
+        feather(self, out.data_mut());
         out
     }
 

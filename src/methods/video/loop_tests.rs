@@ -2,8 +2,9 @@
 //! cut, and the coarse-to-fine band keeps it within a few percent of the exact cut's cost.
 
 use super::canvas::Canvas;
-use super::loop_band::{COPY_A, place_second_copy};
-use super::options::Options;
+use crate::methods::graphcut::blend::FEATHER_RADIUS;
+use super::loop_band::{COPY_A, COPY_B, place_second_copy};
+use super::options::{Blend, Options};
 use super::procedural::waves;
 use super::session::Session;
 use super::source::Source;
@@ -146,4 +147,73 @@ fn the_loop_keeps_the_transition_whose_seam_costs_least() {
         one.step().unwrap();
     }
     assert_eq!(one.transition(), Some(best_transition(&clip, 60).unwrap()));
+}
+
+/// Feathering a loop mixes copies A and B only near its seam surface, in time as in space: a
+/// voxel with one label within the window keeps its value, and a voxel at the seam becomes a
+/// mix of the two copies' values there. Splining is for images and is refused by name.
+#[test]
+fn feathering_mixes_the_copies_near_the_seam_surface_only() {
+    let clip = demo_clip(WATER, 4);
+    let run = |blend| {
+        let mut s = Session::new(
+            clip.clone(),
+            Options {
+                blend,
+                transitions: 1,
+                ..Options::default()
+            },
+        )
+        .unwrap();
+        while !s.is_done() {
+            s.step().unwrap();
+        }
+        s
+    };
+    let (plain, feathered) = (run(Blend::None), run(Blend::Feather));
+    let canvas = &plain.synthesis().canvas;
+    let (w, h, d) = canvas.size();
+    let r = FEATHER_RADIUS as isize;
+    let (mut mixed, mut kept) = (0, 0);
+    for t in 0..plain.size().2.min(d - 1) {
+        let (a, b) = (plain.frame(t), feathered.frame(t));
+        for y in 0..h {
+            for x in 0..w {
+                let i = ((t + 1) * h + y) * w + x;
+                let own = canvas.label[i];
+                let near = (-r..=r).any(|dt| {
+                    (-r..=r).any(|dy| {
+                        (-r..=r).any(|dx| {
+                            let at = |c: usize, d: isize, n: usize| (c as isize + d).clamp(0, n as isize - 1) as usize;
+                            let j = (at(t + 1, dt, d) * h + at(y, dy, h)) * w + at(x, dx, w);
+                            canvas.label[j] != own
+                        })
+                    })
+                });
+                let p = (y * w + x) * 3;
+                if !near {
+                    assert_eq!(a[p..p + 3], b[p..p + 3], "({x}, {y}, {t}) is far from the seam");
+                    kept += 1;
+                    continue;
+                }
+                let synthesis = plain.synthesis();
+                let (va, vb) = (
+                    synthesis.sources[0].volume.voxel(synthesis.source_voxel(COPY_A, i).unwrap()),
+                    synthesis.sources[1].volume.voxel(synthesis.source_voxel(COPY_B, i).unwrap()),
+                );
+                for k in 0..3 {
+                    let (lo, hi) = (va[k].min(vb[k]), va[k].max(vb[k]));
+                    assert!((lo - 1e-5..=hi + 1e-5).contains(&b[p + k]), "({x}, {y}, {t})");
+                }
+                mixed += usize::from(a[p..p + 3] != b[p..p + 3]);
+            }
+        }
+    }
+    assert!(mixed > 100 && kept > 100, "{mixed} mixed, {kept} kept");
+    let spline = Options {
+        blend: Blend::Spline,
+        ..Options::default()
+    };
+    let err = Session::new(clip, spline).err().expect("refused").to_string();
+    assert!(err.contains("blend"), "{err}");
 }

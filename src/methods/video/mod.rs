@@ -8,12 +8,14 @@
 //!   placements of the session;
 //! - `placement`: error regions, random temporal (7.B) and spatio-temporal (7.E) offsets,
 //!   entire-patch and sub-patch matching (7.C) with the 3-D FFT SSD;
-//! - `session`: phases, including 7.D's constrained first and last k frames;
+//! - `session`: phases, including 7.D's constrained first and last k frames; `loop_band`: 7.A's
+//!   cut coarse to fine; `feather`: section 5's feathering across voxel seams;
 //! - `teaching`: per-frame seam overlay and x-t slice.
 
 pub mod anatomy;
 pub mod budget;
 pub mod canvas;
+pub mod feather;
 pub mod loop_band;
 pub mod options;
 pub mod placement;
@@ -34,6 +36,6 @@ mod loop_tests;
 mod tests;
 
 pub use budget::MAX_VOLUME_BYTES;
-pub use options::{Mode, Options, Placement};
+pub use options::{Blend, Mode, Options, Placement};
 pub use session::{Event, Session};
 pub use volume::Volume;

@@ -2,6 +2,7 @@
 //! values; the other defaults are the library's (docs/methods/video.md gives the reasons).
 
 use crate::core::{Error, Result};
+pub use crate::methods::graphcut::Blend;
 
 /// Which of the paper's video syntheses to run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -102,6 +103,10 @@ pub struct Options {
     pub refinement_patches: usize,
     /// M' (eq. 5) instead of M. Default: false.
     pub gradient_cost: bool,
+    /// How the output is smoothed across seams (section 5): [`Blend::None`] or
+    /// [`Blend::Feather`], over x, y and time; [`Blend::Spline`] is for images only. Default:
+    /// none.
+    pub blend: Blend,
     /// The memory budget in MiB (see `crate::core::budget`): the constructor refuses a video
     /// whose working set would exceed it. Default: 1024.
     pub memory_budget_mib: usize,
@@ -122,6 +127,7 @@ impl Default for Options {
             k: 0.01,
             refinement_patches: 2,
             gradient_cost: false,
+            blend: Blend::None,
             memory_budget_mib: crate::core::budget::DEFAULT_MEMORY_BUDGET_MIB,
         }
     }
@@ -163,6 +169,12 @@ impl Options {
                     "only mode 'extend' changes the frame size; the clip is {}x{}, asked for {width}x{height}",
                     input.0, input.1
                 ),
+            ));
+        }
+        if self.blend == Blend::Spline {
+            return Err(invalid(
+                "blend",
+                "'spline' blends images only; video offers 'none' and 'feather'".into(),
             ));
         }
         if !(self.k.is_finite() && self.k > 0.0) {

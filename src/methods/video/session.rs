@@ -16,7 +16,7 @@ use super::anatomy::{CostSlice, cost_slice};
 use super::budget::WorkingSet;
 use super::canvas::{Canvas, Patch, UNCOVERED};
 use super::loop_band::{COPY_A, EXACT_PIXELS, place_second_copy};
-use super::options::{Mode, Options, Placement};
+use super::options::{Blend, Mode, Options, Placement};
 use super::placement::{Allowed, Region, draw_offset, largest_search, region_around};
 use super::source::Source;
 use super::synthesis::GraphSlice;
@@ -88,6 +88,8 @@ pub struct Session {
     /// 7.A: the cheapest seam so far, with its canvas, its transition and that transition's
     /// number.
     best: Option<(f64, Synthesis, Transition, usize)>,
+    /// The canvas feathered across its seams, once done (with `blend: Feather`).
+    feathered: Option<Volume>,
 }
 
 impl Session {
@@ -96,6 +98,12 @@ impl Session {
     pub fn new(clip: Volume, options: Options) -> Result<Session> {
         let input = (clip.width(), clip.height(), clip.frames());
         let size = options.output_size(input)?;
+        // A feathered canvas (colours only: a quarter of a canvas voxel's bytes) is kept beside
+        // the canvas.
+        let feathered = |voxels: usize| match options.blend {
+            Blend::Feather => voxels + voxels / 4,
+            _ => voxels,
+        };
         let plane = |w: usize, h: usize| w * h;
         let sigma = value_sigma(clip.data());
         let rng = Rng::new(options.seed);
@@ -107,7 +115,9 @@ impl Session {
                 let copies = if options.transitions > 1 { 2 } else { 1 };
                 let working_set = WorkingSet {
                     input_voxels: plane(input.0, input.1) * (input.2 + 2 * (window + 1) * copies),
-                    output_voxels: plane(input.0, input.1) * ((window + 1) * copies + input.2 / 4),
+                    output_voxels: feathered(
+                        plane(input.0, input.1) * ((window + 1) * copies + input.2 / 4),
+                    ),
                     patch_voxels: plane(input.0, input.1) * window,
                     search_bytes: 0,
                 };
@@ -120,6 +130,7 @@ impl Session {
                     candidates,
                     candidate: 0,
                     best: None,
+                    feathered: None,
                     options,
                     clip,
                     synthesis,
@@ -149,7 +160,7 @@ impl Session {
                 };
                 let working_set = WorkingSet {
                     input_voxels: plane(input.0, input.1) * (input.2 + k),
-                    output_voxels: plane(size.0, size.1) * total,
+                    output_voxels: feathered(plane(size.0, size.1) * total),
                     patch_voxels: plane(input.0, input.1) * input.2,
                     search_bytes,
                 };
@@ -164,6 +175,7 @@ impl Session {
                     candidates: Vec::new(),
                     candidate: 0,
                     best: None,
+                    feathered: None,
                     options,
                     clip,
                     synthesis,
@@ -329,6 +341,9 @@ impl Session {
             Phase::Cover | Phase::Refine => self.step_patch()?,
             Phase::Done => unreachable!("handled above"),
         };
+        if self.phase == Phase::Done && self.options.blend == Blend::Feather {
+            self.feathered = Some(self.synthesis.feathered());
+        }
         let canvas = &self.synthesis.canvas;
         let mut event = Event {
             done: self.phase == Phase::Done,
@@ -533,11 +548,16 @@ impl Session {
         Ok(Some(placed))
     }
 
-    /// The colours of output frame `t` (RGB f32).
+    /// The colours of output frame `t` (RGB f32), feathered across seams once done when the
+    /// options ask for it.
     #[must_use]
     pub fn frame(&self, t: usize) -> &[f32] {
         match self.frame_origin(t) {
-            FrameOrigin::Canvas(f) => self.synthesis.canvas.pixels.frame(f),
+            FrameOrigin::Canvas(f) => self
+                .feathered
+                .as_ref()
+                .unwrap_or(&self.synthesis.canvas.pixels)
+                .frame(f),
             FrameOrigin::Clip(f) => self.clip.frame(f),
         }
     }

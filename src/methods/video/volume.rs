@@ -106,6 +106,12 @@ impl Volume {
         &self.data
     }
 
+    /// The RGB values to change in place (as [`Volume::data`] lays them out).
+    #[must_use]
+    pub fn data_mut(&mut self) -> &mut [f32] {
+        &mut self.data
+    }
+
     /// Voxel index of (x, y, t).
     #[inline]
     #[must_use]
