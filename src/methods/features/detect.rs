@@ -5,7 +5,8 @@
 //! Bilateral filter (sigma_d = 2, sigma_r = 10/256) on the grey image; edge response = gradient
 //! magnitude by central differences, ridge response = |Laplacian|; a two-pass classification
 //! (strong: at least the global high threshold, a percentile of the responses; weak: within 2
-//! pixels of a strong pixel of response R and at least alpha R); then thinning, weakest first.
+//! pixels of a strong pixel of response R and at least alpha R, or chained from such a pixel
+//! along its curve's tangent at the same threshold); then thinning, weakest first.
 //! The tangent is the direction across the dominant gradient of the structure tensor smoothed over
 //! 5x5, so a ridge's centre, where the gradient vanishes, still gets its line's direction.
 
@@ -231,24 +232,32 @@ fn classify(
 ) -> FeatureMap {
     let strong: Vec<bool> = response.iter().map(|&r| r >= threshold).collect();
     let mut mask = strong.clone();
-    // Second pass: weaker responses near a strong one, against a threshold set by it.
+    // Second pass: weaker responses near a strong one, against a threshold set by it; each weak
+    // pixel taken carries that threshold on along its curve (see `chain`).
+    let mut low = vec![f32::INFINITY; w * h];
+    let mut chain_ends = Vec::new();
     for y in 0..h {
         for x in 0..w {
             let i = y * w + x;
             if !strong[i] {
                 continue;
             }
-            let low = alpha * response[i];
+            let bound = alpha * response[i];
             for yy in y.saturating_sub(2)..(y + 3).min(h) {
                 for xx in x.saturating_sub(2)..(x + 3).min(w) {
                     let j = yy * w + xx;
-                    if response[j] >= low {
+                    if !strong[j] && response[j] >= bound && bound < low[j] {
+                        if low[j] == f32::INFINITY {
+                            chain_ends.push(j);
+                        }
+                        low[j] = bound;
                         mask[j] = true;
                     }
                 }
             }
         }
     }
+    chain(&mut mask, &mut low, chain_ends, (&response, &angle), w, h);
     thin(&mut mask, &response, w, h);
     FeatureMap {
         width: w,
@@ -259,6 +268,60 @@ fn classify(
         threshold,
     }
 }
+
+/// Chaining along curves: from each weak pixel the second pass took, the neighbours that
+/// continue its curve (within [`CHAIN_CONE`] of its tangent, either way) join when their
+/// response reaches the threshold the pixel carries, and carry it on in turn. A broken strong
+/// curve is followed through its weak stretch to the next strong piece, while weak responses
+/// across the curve (texture beside it) are not taken. Pixels are visited first in, first out,
+/// from the ends in scan order, so the map does not depend on anything but the image.
+fn chain(
+    mask: &mut [bool],
+    low: &mut [f32],
+    ends: Vec<usize>,
+    (response, angle): (&[f32], &[f32]),
+    w: usize,
+    h: usize,
+) {
+    let mut queue = std::collections::VecDeque::from(ends);
+    while let Some(i) = queue.pop_front() {
+        let (x, y) = ((i % w) as isize, (i / w) as isize);
+        let (tx, ty) = (
+            crate::core::math::cosf(angle[i]),
+            crate::core::math::sinf(angle[i]),
+        );
+        for (dx, dy) in NEIGHBOURS {
+            let (nx, ny) = (x + dx, y + dy);
+            if nx < 0 || ny < 0 || nx >= w as isize || ny >= h as isize {
+                continue;
+            }
+            let along = (tx * dx as f32 + ty * dy as f32).abs() / crate::core::math::hypotf(dx as f32, dy as f32);
+            let j = ny as usize * w + nx as usize;
+            if along < CHAIN_CONE || mask[j] || response[j] < low[i] {
+                continue;
+            }
+            mask[j] = true;
+            low[j] = low[i];
+            queue.push_back(j);
+        }
+    }
+}
+
+/// A neighbour continues a pixel's curve when the cosine between the step to it and the
+/// pixel's tangent is at least this (within about 35 degrees).
+const CHAIN_CONE: f32 = 0.82;
+
+/// The eight neighbours of a pixel.
+const NEIGHBOURS: [(isize, isize); 8] = [
+    (-1, -1),
+    (0, -1),
+    (1, -1),
+    (-1, 0),
+    (1, 0),
+    (-1, 1),
+    (0, 1),
+    (1, 1),
+];
 
 impl FeatureMap {
     /// Feature pixels.
@@ -418,6 +481,35 @@ mod tests {
             assert_eq!(bucket(map.angle[x * 64 + 8]), 2, "vertical tangent");
         }
         assert_eq!(components(&map.mask, 64, 64), 1, "one connected grid");
+    }
+
+    /// A dark line, strong at both ends and faint for 16 pixels between them, and a faint line
+    /// of its own 8 pixels below: the second pass follows the first line through its faint
+    /// stretch (chaining along its tangent), and takes nothing of the second, which no strong
+    /// pixel reaches.
+    #[test]
+    fn the_second_pass_chains_a_broken_line_through_its_faint_stretch() {
+        let img = Image::from_fn(64, 40, 1, |x, y, _| {
+            let faint = (20..36).contains(&x);
+            match y {
+                16 if faint => 0.6,
+                16 => 0.3,
+                24 => 0.6,
+                _ => 0.8,
+            }
+        })
+        .unwrap();
+        let (response, angle) = responses(&img, FeatureKind::Ridges);
+        let (strong, faint) = (response[16 * 64 + 10], response[16 * 64 + 28]);
+        assert!(faint > 0.3 * strong && faint < 0.5 * strong, "{strong} {faint}");
+        let map = classify(64, 40, response, angle, 0.75 * strong, 0.3);
+        let on = |x: usize, y: usize| (y - 1..=y + 1).any(|yy| map.mask[yy * 64 + x]);
+        // Where the line's darkness steps (x = 19 to 20, 35 to 36) the Laplacian along it is
+        // small; everywhere else the line is found, its faint middle (23 to 32) by chaining.
+        for x in (2..62).filter(|x| ![19, 20, 35, 36].contains(x)) {
+            assert!(on(x, 16), "the broken line at x = {x}");
+            assert!(!on(x, 24), "the faint line alone at x = {x}");
+        }
     }
 
     #[test]
