@@ -3,13 +3,13 @@
 
 use super::canvas::Canvas;
 use crate::methods::graphcut::blend::FEATHER_RADIUS;
-use super::loop_band::{COPY_A, COPY_B, place_second_copy};
+use super::loop_band::{COPY_A, COPY_B, EXACT_PIXELS, place_second_copy};
 use super::options::{Blend, Options};
 use super::procedural::waves;
 use super::session::Session;
 use super::source::Source;
 use super::synthesis::Synthesis;
-use super::transition::{best_transition, good_transitions};
+use super::transition::{Transition, best_transition, good_transitions};
 use super::volume::Volume;
 
 const RIPPLES: &[u8] = include_bytes!("../../../www/samples/clips/ripples.png");
@@ -60,9 +60,14 @@ fn the_loop_cuts_at_different_times_across_the_frame() {
     assert!(water >= 0.15, "water: {water:.3} of pixels cut 3+ frames from the median");
 }
 
-/// The loop's canvas and copies for `clip`, as the session makes them, with copy A placed.
+/// The loop's canvas and copies for `clip`'s best transition, as the session makes them, with
+/// copy A placed.
 fn loop_synthesis(clip: &Volume) -> Synthesis {
-    let tr = best_transition(clip, 60).unwrap();
+    loop_synthesis_for(clip, best_transition(clip, 60).unwrap())
+}
+
+/// The same for transition `tr`.
+fn loop_synthesis_for(clip: &Volume, tr: Transition) -> Synthesis {
     let h = tr.half_window;
     let a = clip.frames_range(tr.from - h - 1, 2 * h + 2).unwrap();
     let b = clip.frames_range(tr.to - h, 2 * h + 1).unwrap();
@@ -132,10 +137,15 @@ fn the_loop_keeps_the_transition_whose_seam_costs_least() {
     assert_eq!(seams.len(), 3);
     let numbers: Vec<usize> = seams[..2].iter().map(|s| s.1.unwrap().0).collect();
     assert_eq!(numbers, vec![0, 1], "the events name the transition each step seamed");
-    let costs: Vec<f64> = seams.iter().map(|s| s.0).collect();
+    // The third transition's seam, found apart from the session, as the session seams it.
+    let third = good_transitions(&clip, 60, 3).unwrap()[2];
+    let mut apart = loop_synthesis_for(&clip, third);
+    let third_cost = place_second_copy(&mut apart, EXACT_PIXELS).unwrap().cut_cost;
+    let costs = [seams[0].0, seams[1].0, third_cost];
     let cheapest = (0..3).min_by(|&a, &b| costs[a].total_cmp(&costs[b])).unwrap();
     let kept = last.unwrap().transition.expect("a loop's transition");
     assert_eq!((kept.0, kept.1), (cheapest, 3), "costs {costs:?}");
+    assert_eq!(seams[2].0, costs[cheapest], "the last step reports the kept seam");
     assert_eq!(session.transition().unwrap().period(), kept.2);
     assert_eq!(session.size().2, kept.2, "the output is the kept loop");
     // The canvas is the kept seam's: its seams cost what the kept step's cut did.

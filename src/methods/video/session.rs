@@ -18,6 +18,7 @@ use super::canvas::{Canvas, Patch, UNCOVERED};
 use super::loop_band::{COPY_A, EXACT_PIXELS, place_second_copy};
 use super::options::{Blend, Mode, Options, Placement};
 use super::placement::{Allowed, Region, draw_offset, largest_search, region_around};
+use super::seam::Placed;
 use super::source::Source;
 use super::synthesis::GraphSlice;
 use super::synthesis::Synthesis;
@@ -87,7 +88,7 @@ pub struct Session {
     candidate: usize,
     /// 7.A: the cheapest seam so far, with its canvas, its transition and that transition's
     /// number.
-    best: Option<(f64, Synthesis, Transition, usize)>,
+    best: Option<(Placed, Synthesis, Transition, usize)>,
     /// The canvas feathered across its seams, once done (with `blend: Feather`).
     feathered: Option<Volume>,
 }
@@ -334,8 +335,7 @@ impl Session {
                 // differences, as a cut anywhere else does, and the seam does not drift to it.
                 let placed = place_second_copy(&mut self.synthesis, EXACT_PIXELS)?;
                 seamed = self.transition_step();
-                self.next_transition(placed.cut_cost)?;
-                Some(placed)
+                Some(self.next_transition(placed)?)
             }
             Phase::Constraint => self.step_constraint()?,
             Phase::Cover | Phase::Refine => self.step_patch()?,
@@ -377,10 +377,14 @@ impl Session {
             .map(|tr| (self.candidate, self.candidates.len(), tr.period()))
     }
 
-    /// After a transition's seam of `cost`: keeps it if it is the cheapest so far and sets up the
-    /// next transition's canvas, or, after the last, restores the cheapest and finishes.
-    fn next_transition(&mut self, cost: f64) -> Result<()> {
-        let better = self.best.as_ref().is_none_or(|(least, ..)| cost < *least);
+    /// After a transition's seam (`placed`): keeps it if it is the cheapest so far and sets up
+    /// the next transition's canvas, or, after the last, restores the cheapest and finishes.
+    /// Returns the placement the step reports: this one, or the kept one once done.
+    fn next_transition(&mut self, placed: Placed) -> Result<Placed> {
+        let better = self
+            .best
+            .as_ref()
+            .is_none_or(|(least, ..)| placed.cut_cost < least.cut_cost);
         let current = self.transition.expect("a loop has a transition");
         let watched = self.synthesis.record_anatomy;
         if let Some(&next) = self.candidates.get(self.candidate + 1) {
@@ -388,21 +392,22 @@ impl Session {
             fresh.record_anatomy = watched;
             let seamed = std::mem::replace(&mut self.synthesis, fresh);
             if better {
-                self.best = Some((cost, seamed, current, self.candidate));
+                self.best = Some((placed, seamed, current, self.candidate));
             }
             self.candidate += 1;
             self.transition = Some(next);
             self.phase = Phase::LoopA;
         } else {
-            if let Some((_, kept, tr, number)) = self.best.take().filter(|_| !better) {
+            self.phase = Phase::Done;
+            if let Some((kept_placed, kept, tr, number)) = self.best.take().filter(|_| !better) {
                 self.synthesis = kept;
                 self.synthesis.record_anatomy = watched;
                 self.transition = Some(tr);
                 self.candidate = number;
+                return Ok(kept_placed);
             }
-            self.phase = Phase::Done;
         }
-        Ok(())
+        Ok(placed)
     }
 
     /// One patch of 7.D's constrained frames: the input's first k frames at t = 0 (anywhere in x
