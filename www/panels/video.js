@@ -34,7 +34,7 @@ const FIXED_TITLE = 'frames held fixed at both ends of random offsets or a spati
 const OPTIONS_HTML = `
   <label>Clip <select id="vt-source">
     <option value="water">demo: water (128×128, 60 frames)</option>
-    <option value="ripples">demo: ripples, three sources, each with its own rhythm (128×128, 60 frames)</option>
+    <option value="ripples" title="three ripple sources, each with its own rhythm: a loop's seam cuts at different times across the frame">demo: ripples (128×128, 60 frames)</option>
     <option value="file">a video file or image sequence…</option>
   </select></label>
   <input id="vt-file" type="file" accept="video/*,image/*" multiple hidden>
