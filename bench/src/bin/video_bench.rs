@@ -51,29 +51,13 @@ fn main() {
         waves(128, 128, 60, 1).unwrap(),
         Options::default(),
     );
-    run(
-        "extend 96x96x30 -> 192x192x60 random",
-        waves(96, 96, 30, 1).unwrap(),
-        Options {
-            mode: Mode::Extend,
-            output_width: Some(192),
-            output_height: Some(192),
-            output_frames: Some(60),
-            ..Options::default()
-        },
-    );
-    for (label, placement) in [
-        (
-            "extend 96x96x30 -> 192x192x60 entire",
-            Placement::EntirePatch,
-        ),
-        (
-            "extend 96x96x30 -> 192x192x60 sub-patch",
-            Placement::SubPatch,
-        ),
+    for (name, placement) in [
+        ("random", Placement::Random),
+        ("entire", Placement::EntirePatch),
+        ("sub-patch", Placement::SubPatch),
     ] {
         run(
-            label,
+            &format!("extend 96x96x30 -> 192x192x60 {name}"),
             waves(96, 96, 30, 1).unwrap(),
             Options {
                 mode: Mode::Extend,

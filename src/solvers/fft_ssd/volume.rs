@@ -386,6 +386,37 @@ mod tests {
         (cost, area)
     }
 
+    /// A view of `data`, `size` = (width, height, depth), three channels.
+    fn view<'a>(
+        data: &'a [f32],
+        (width, height, depth): (usize, usize, usize),
+        weights: Option<&'a [f32]>,
+    ) -> VolumeView<'a> {
+        VolumeView {
+            data,
+            width,
+            height,
+            depth,
+            channels: 3,
+            weights,
+        }
+    }
+
+    /// `map` at translation `t` equals the direct SSD and overlap there.
+    fn check_against_direct(
+        map: &VolumeSsdMap,
+        (output, patch): (VolumeView<'_>, VolumeView<'_>),
+        t: (isize, isize, isize),
+    ) {
+        let (cost, area) = map.get(t.0, t.1, t.2).unwrap();
+        let (dc, da) = direct(output, patch, t);
+        assert!((f64::from(area) - da).abs() < 1e-4, "area at {t:?}");
+        assert!(
+            (f64::from(cost) - dc).abs() < 1e-3 * (1.0 + dc),
+            "cost at {t:?}: {cost} vs {dc}"
+        );
+    }
+
     #[test]
     fn the_3d_fft_search_equals_the_direct_ssd() {
         let mut rng = Rng::new(3);
@@ -401,38 +432,15 @@ mod tests {
                 }
             })
             .collect();
-        let output = VolumeView {
-            data: &out,
-            width: ow,
-            height: oh,
-            depth: od,
-            channels: c,
-            weights: Some(&weights),
-        };
-        let patch = VolumeView {
-            data: &pat,
-            width: pw,
-            height: ph,
-            depth: pd,
-            channels: c,
-            weights: None,
-        };
+        let output = view(&out, (ow, oh, od), Some(&weights));
+        let patch = view(&pat, (pw, ph, pd), None);
         let map = volume_ssd_map(output, patch).unwrap();
         assert_eq!(map.size, (ow + pw - 1, oh + ph - 1, od + pd - 1));
         let mut checked = 0;
         for tt in 1 - pd as isize..od as isize {
             for ty in 1 - ph as isize..oh as isize {
                 for tx in 1 - pw as isize..ow as isize {
-                    let (cost, area) = map.get(tx, ty, tt).unwrap();
-                    let (dc, da) = direct(output, patch, (tx, ty, tt));
-                    assert!(
-                        (f64::from(area) - da).abs() < 1e-4,
-                        "area at {tx},{ty},{tt}"
-                    );
-                    assert!(
-                        (f64::from(cost) - dc).abs() < 1e-3 * (1.0 + dc),
-                        "cost at {tx},{ty},{tt}: {cost} vs {dc}"
-                    );
+                    check_against_direct(&map, (output, patch), (tx, ty, tt));
                     checked += 1;
                 }
             }
@@ -450,22 +458,8 @@ mod tests {
         let weights: Vec<f32> = (0..ow * oh * od)
             .map(|i| if i % 4 == 1 { 0.0 } else { 1.0 })
             .collect();
-        let output = VolumeView {
-            data: &out,
-            width: ow,
-            height: oh,
-            depth: od,
-            channels: c,
-            weights: Some(&weights),
-        };
-        let patch = VolumeView {
-            data: &pat,
-            width: pw,
-            height: ph,
-            depth: pd,
-            channels: c,
-            weights: None,
-        };
+        let output = view(&out, (ow, oh, od), Some(&weights));
+        let patch = view(&pat, (pw, ph, pd), None);
         // Offsets inside the output, partly past its far side, and partly before it.
         for range in [
             VolumeRange {
@@ -485,13 +479,7 @@ mod tests {
                 for j in 0..range.count.1 as isize {
                     for i in 0..range.count.0 as isize {
                         let t = (range.first.0 + i, range.first.1 + j, range.first.2 + k);
-                        let (cost, area) = map.get(t.0, t.1, t.2).unwrap();
-                        let (dc, da) = direct(output, patch, t);
-                        assert!((f64::from(area) - da).abs() < 1e-4, "area at {t:?} ({n:?})");
-                        assert!(
-                            (f64::from(cost) - dc).abs() < 1e-3 * (1.0 + dc),
-                            "cost at {t:?}: {cost} vs {dc} ({n:?})"
-                        );
+                        check_against_direct(&map, (output, patch), t);
                     }
                 }
             }
